@@ -1,0 +1,63 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <ductile_contact/discretisation/boundary_condition.h>
+#include <ductile_contact/materials/body_parameters.h>
+#include <ductile_contact/mesh/mesh_parameters.h>
+#include <ductile_contact/output/output_parameters.h>
+#include <ductile_contact/solver/solver_parameters.h>
+
+#include <deque>
+#include <string>
+
+namespace DuctileContact
+{
+  /**
+   * Every input of a run. The in-class defaults of the structs are the only
+   * defaults (entries are bound with ParameterHandler::add_parameter).
+   *
+   * The numbers of `Body <id>` and `Boundary <id>` subsections depend on the
+   * file: a first, tolerant pass reads `Bodies/Material ids` and
+   * `Boundary conditions/Boundary ids`, then every subsection is declared
+   * and the file is parsed strictly (unknown entries are errors).
+   */
+  struct RunParameters
+  {
+    MeshParameters         mesh;
+    unsigned int           fe_degree = 2;
+    // deques: entries are bound by address, so elements must not move.
+    std::deque<BodyParameters>    bodies;
+    std::deque<BoundaryCondition> boundary_conditions;
+    LoadSteppingParameters load_stepping;
+    NewtonParameters       newton;
+    LinearSolverParameters linear_solver;
+    OutputParameters       output;
+
+    dealii::ParameterHandler prm;
+
+    /// Parses and checks @p file_name; throws InputError or deal.II's
+    /// parameter exceptions. With an empty name, only declares (defaults).
+    void
+    parse(const std::string &file_name);
+
+    /// Same as parse(), from text (used by tests).
+    void
+    parse_string(const std::string &text);
+
+    /// The body with this material id; throws if unknown.
+    const BodyParameters &
+    body(const dealii::types::material_id id) const;
+
+  private:
+    void
+    declare(const std::vector<unsigned int> &material_ids,
+            const std::vector<unsigned int> &boundary_ids);
+
+    void
+    check();
+
+    std::vector<unsigned int> material_ids{0};
+    std::vector<unsigned int> boundary_ids;
+  };
+} // namespace DuctileContact

@@ -1,0 +1,83 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <ductile_contact/app/run_parameters.h>
+#include <ductile_contact/discretisation/discretisation.h>
+#include <ductile_contact/output/statistics.h>
+#include <ductile_contact/output/tee_stream.h>
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace DuctileContact
+{
+  class SystemAssembler;
+  class LinearSolver;
+  class NewtonSolver;
+  class SolutionWriter;
+
+  /**
+   * One quasi-static run: mesh, discretisation, and the load-step loop with
+   * cut-back (model.md section 6). Per accepted step it records reactions,
+   * mean boundary displacements, stored energy, external work (trapezoidal
+   * rule, W += 1/2 (f_n + f_n+1) . (u_n+1 - u_n)) and the energy-balance
+   * residual W_ext - int Psi, and writes the statistics table and output.
+   */
+  class Simulation
+  {
+  public:
+    Simulation(const RunParameters &parameters,
+               const MPI_Comm       comm,
+               TeeStream           &log);
+    ~Simulation();
+
+    /// Returns 0 when the end time is reached, 2 when the run gave up.
+    int
+    run();
+
+  private:
+    struct BoundaryRecord;
+
+    void
+    setup();
+    void
+    record_step(const unsigned int step,
+                const double       t,
+                const double       dt,
+                const unsigned int newton_iterations,
+                const unsigned int linear_iterations,
+                const unsigned int cutbacks,
+                const double       stored_energy);
+    std::vector<double>
+    boundary_means(const dealii::TrilinosWrappers::MPI::BlockVector &u) const;
+
+    const RunParameters &parameters;
+    const MPI_Comm       comm;
+    TeeStream           &log;
+    dealii::ConditionalOStream pcout;
+    dealii::ConditionalOStream verbose_out;
+    dealii::TimerOutput        timer;
+
+    dealii::parallel::distributed::Triangulation<dim> triangulation;
+    std::map<dealii::types::material_id, const BodyParameters *> bodies;
+    std::unique_ptr<Discretisation>  discretisation;
+    std::unique_ptr<SystemAssembler> assembler;
+    std::unique_ptr<LinearSolver>    linear_solver;
+    std::unique_ptr<NewtonSolver>    newton;
+    std::unique_ptr<SolutionWriter>  writer;
+    Statistics                       statistics;
+
+    /// Owned DoFs of each component on each boundary with conditions.
+    std::vector<std::array<dealii::IndexSet, dim>> boundary_dofs;
+
+    dealii::TrilinosWrappers::MPI::BlockVector u, u_ghosted, internal_force,
+      previous_internal_force;
+    double external_work = 0.;
+    double wall_start    = 0.;
+  };
+} // namespace DuctileContact

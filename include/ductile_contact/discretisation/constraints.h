@@ -1,0 +1,28 @@
+#pragma once
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <ductile_contact/discretisation/boundary_condition.h>
+#include <ductile_contact/discretisation/discretisation.h>
+
+#include <deque>
+
+namespace DuctileContact
+{
+  /**
+   * Constraints of a Newton update at load time @p t: hanging nodes, and on
+   * every Dirichlet DoF the update that moves the current displacement to
+   * the prescribed value, delta = ubar(t) - u. When @p u is nullptr the
+   * Dirichlet lines are homogeneous (same structure; used for the sparsity
+   * pattern). The alpha and s DoFs are fixed at zero: their equations come
+   * with the plasticity and phase-field issues.
+   */
+  void
+  make_newton_constraints(
+    const Discretisation                            &discretisation,
+    const std::deque<BoundaryCondition>             &boundary_conditions,
+    const double                                     t,
+    const dealii::TrilinosWrappers::MPI::BlockVector *u,
+    dealii::AffineConstraints<double>               &constraints);
+} // namespace DuctileContact

@@ -1,0 +1,77 @@
+#pragma once
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values_extractors.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <ductile_contact/core/types.h>
+
+#include <map>
+#include <vector>
+
+namespace DuctileContact
+{
+  /// Which fields a body carries besides the displacement.
+  struct BodyFields
+  {
+    bool hardening   = false; ///< alpha (plasticity)
+    bool phase_field = false; ///< s (fracture)
+  };
+
+  /**
+   * The finite element layout of model.md section 1 on one distributed mesh:
+   * an hp::FECollection whose elements are FESystem(FE_Q(p)^3, alpha, s),
+   * where alpha and s are FE_Q(p) on bodies that carry them and FE_Nothing
+   * elsewhere. DoFs are numbered block-wise [u | alpha | s] (Block::*), so a
+   * scene without plasticity has an empty alpha block, not zero unknowns.
+   *
+   * Owns the DoFHandler, the index sets per block and the hanging-node
+   * constraints; knows nothing of the equations.
+   */
+  class Discretisation
+  {
+  public:
+    Discretisation(const dealii::parallel::distributed::Triangulation<dim> &tria,
+                   const unsigned int                                   degree,
+                   const std::map<dealii::types::material_id, BodyFields> &bodies);
+
+    /// Distributes and renumbers the DoFs; call after every mesh change.
+    void
+    setup();
+
+    /// Index in the FE collection for a body with these fields.
+    static unsigned int
+    fe_index(const BodyFields &fields);
+
+    const dealii::parallel::distributed::Triangulation<dim> &triangulation;
+    const unsigned int                                      degree;
+    const std::map<dealii::types::material_id, BodyFields>  bodies;
+
+    dealii::hp::FECollection<dim>      fe_collection;
+    dealii::hp::QCollection<dim>       quadrature;
+    dealii::hp::QCollection<dim - 1>   face_quadrature;
+    dealii::hp::MappingCollection<dim> mapping;
+    dealii::DoFHandler<dim>            dof_handler;
+
+    std::vector<dealii::types::global_dof_index> dofs_per_block;
+    std::vector<dealii::IndexSet>                owned_partitioning;
+    std::vector<dealii::IndexSet>                relevant_partitioning;
+    dealii::IndexSet                             locally_owned_dofs;
+    dealii::IndexSet                             locally_relevant_dofs;
+
+    /// Hanging-node constraints only (closed).
+    dealii::AffineConstraints<double> hanging_node_constraints;
+
+    const dealii::FEValuesExtractors::Vector displacement{
+      Component::first_displacement};
+    const dealii::FEValuesExtractors::Scalar hardening{Component::hardening};
+    const dealii::FEValuesExtractors::Scalar phase_field{
+      Component::phase_field};
+  };
+} // namespace DuctileContact

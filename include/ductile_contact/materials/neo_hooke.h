@@ -1,0 +1,70 @@
+#pragma once
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <ductile_contact/core/types.h>
+
+namespace DuctileContact
+{
+  /**
+   * State returned by a material point evaluation. Stresses per reference
+   * volume: tau is the Kirchhoff stress [Pa], P = tau F^{-T} the first
+   * Piola-Kirchhoff stress [Pa], A = dP/dF the first elasticity tensor [Pa]
+   * (A[a][B][c][D] = dP_aB / dF_cD), psi the stored energy [J/m^3].
+   */
+  struct MaterialResponse
+  {
+    double                            J = 1.;
+    double                            psi = 0.;
+    dealii::SymmetricTensor<2, dim>   tau;
+    dealii::Tensor<2, dim>            P;
+    dealii::Tensor<4, dim>            A;
+  };
+
+  /**
+   * Compressible neo-Hooke law of model.md (16) and (19) for an intact
+   * (s = 0), elastic (C^p = I) material point:
+   *
+   *   Psi = kappa/2 (J - 1)^2 + mu/2 (tr bbar - 3),  bbar = J^{-2/3} F F^T,
+   *   tau = kappa (J^2 - J) I + mu dev[bbar].
+   *
+   * The tangent is exact: A_aBcD = F^{-1}_Bb F^{-1}_Dd (c_abcd + delta_ac
+   * tau_bd), with c the spatial Kirchhoff tangent (c = J x Eulerian tangent;
+   * volumetric part kappa (2J^2 - J) I x I - 2 kappa (J^2 - J) II, isochoric
+   * part 2/3 mu tr(bbar) PP - 2/3 (tau_iso x I + I x tau_iso), PP the
+   * deviatoric projector).
+   *
+   * A pure function of F and the moduli; J must be positive (the caller
+   * checks, see Newton's line search).
+   *
+   * @param mu     shear modulus [Pa]
+   * @param kappa  bulk modulus [Pa]
+   * @param with_tangent  compute A (otherwise A is left zero)
+   */
+  MaterialResponse
+  neo_hooke(const dealii::Tensor<2, dim> &F,
+            const double                  mu,
+            const double                  kappa,
+            const bool                    with_tangent);
+
+  /// Spatial Kirchhoff tangent c of neo_hooke() (exposed for unit tests).
+  dealii::SymmetricTensor<4, dim>
+  neo_hooke_spatial_tangent(const dealii::Tensor<2, dim> &F,
+                            const double                  mu,
+                            const double                  kappa);
+
+  /// A from the spatial tangent c and tau (see neo_hooke()).
+  dealii::Tensor<4, dim>
+  first_elasticity_tensor(const dealii::Tensor<2, dim>          &F_inv,
+                          const dealii::SymmetricTensor<4, dim> &c,
+                          const dealii::SymmetricTensor<2, dim> &tau);
+
+  /// von Mises equivalent sqrt(3/2 dev(t):dev(t)) of a stress tensor.
+  inline double
+  von_mises(const dealii::SymmetricTensor<2, dim> &t)
+  {
+    const auto d = dealii::deviator(t);
+    return std::sqrt(1.5 * (d * d));
+  }
+} // namespace DuctileContact

@@ -1,0 +1,68 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <ductile_contact/core/types.h>
+
+#include <string>
+#include <vector>
+
+namespace DuctileContact
+{
+  /// A box of cells (all cells whose centre lies inside) refined n more times.
+  struct RefinementBox
+  {
+    dealii::Point<dim> lower;
+    dealii::Point<dim> upper;
+    unsigned int       levels = 0;
+  };
+
+  /**
+   * Parameters of subsection `Mesh`: which scene builds the coarse mesh and
+   * how it is refined. All lengths are in metres.
+   */
+  struct MeshParameters
+  {
+    /// box | two bodies | gmsh
+    std::string scene = "box";
+
+    unsigned int global_refinements = 0;
+
+    /// Raw text of `Local refinement boxes`; parsed into refinement_boxes.
+    std::string                refinement_boxes_text;
+    std::vector<RefinementBox> refinement_boxes;
+
+    struct Box
+    {
+      dealii::Point<dim>        lower_corner{0., 0., 0.};
+      dealii::Point<dim>        upper_corner{1., 1., 1.};
+      std::vector<unsigned int> subdivisions{1, 1, 1};
+    } box;
+
+    /// Plate + block of the paper's scene (model.md section 7).
+    struct TwoBodies
+    {
+      dealii::Point<dim>        plate_size{0.3, 0.2, 0.02};
+      std::vector<unsigned int> plate_subdivisions{19, 13, 2};
+      double                    block_edge = 0.04;
+      std::vector<unsigned int> block_subdivisions{5, 5, 5};
+      /// In-plane (x, y) position of the block's centre.
+      std::vector<double> block_centre{0.035, 0.1};
+      /// Vertical gap between the plate's top and the block's bottom [m].
+      double block_gap = 0.;
+    } two_bodies;
+
+    struct Gmsh
+    {
+      std::string file_name;
+    } gmsh;
+
+    void
+    declare(dealii::ParameterHandler &prm);
+
+    /// Checks values and parses the refinement boxes; throws InputError.
+    void
+    check();
+  };
+} // namespace DuctileContact

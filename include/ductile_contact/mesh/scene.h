@@ -1,0 +1,52 @@
+#pragma once
+
+#include <deal.II/distributed/tria.h>
+
+#include <ductile_contact/core/types.h>
+#include <ductile_contact/mesh/mesh_parameters.h>
+
+#include <set>
+
+namespace DuctileContact
+{
+  /**
+   * Builds the mesh of the scene named in `Mesh/Scene` into @p tria: the
+   * coarse mesh with material ids (bodies) and boundary ids, then the global
+   * and the box-wise local refinements. Throws InputError when the scene
+   * cannot be built (e.g. an unreadable Gmsh file).
+   *
+   * Each scene lives in a file of its own (box_scene.cc, two_body_scene.cc,
+   * gmsh_scene.cc); nothing outside this folder knows which scene runs.
+   */
+  void
+  create_scene_mesh(const MeshParameters                        &parameters,
+                    dealii::parallel::distributed::Triangulation<dim> &tria);
+
+  /// A brick with boundary ids 0..5 on the faces x-, x+, y-, y+, z-, z+.
+  void
+  create_box_scene(const MeshParameters::Box  &parameters,
+                   dealii::Triangulation<dim> &tria);
+
+  /**
+   * The plate and block of model.md section 7 as one mesh of two
+   * disconnected bodies (no shared vertices): material id 0 = plate,
+   * 1 = block; boundary ids 1 = clamp (plate face x = Lx), 3 = plate top,
+   * 2 = block top, 4 = block bottom, 5 = block sides, 0 = other plate faces.
+   */
+  void
+  create_two_body_scene(const MeshParameters::TwoBodies &parameters,
+                        dealii::Triangulation<dim>      &tria);
+
+  /// A Gmsh mesh; physical tags become material and boundary ids.
+  void
+  create_gmsh_scene(const MeshParameters::Gmsh &parameters,
+                    dealii::Triangulation<dim> &tria);
+
+  /// Material ids present in the (distributed) mesh, on all ranks.
+  std::set<dealii::types::material_id>
+  material_ids_in_mesh(const dealii::parallel::distributed::Triangulation<dim> &tria);
+
+  /// Boundary ids present in the (distributed) mesh, on all ranks.
+  std::set<dealii::types::boundary_id>
+  boundary_ids_in_mesh(const dealii::parallel::distributed::Triangulation<dim> &tria);
+} // namespace DuctileContact

@@ -1,0 +1,83 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <ductile_contact/solver/linear_solver.h>
+#include <ductile_contact/solver/solver_parameters.h>
+#include <ductile_contact/solver/system_assembler.h>
+
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace DuctileContact
+{
+  /// Outcome of one Newton solve (one load step).
+  struct NewtonReport
+  {
+    bool                converged          = false;
+    unsigned int        iterations         = 0;
+    unsigned int        linear_iterations  = 0;
+    std::vector<double> residual_norms;
+    /// Observed order log(r_k+1/r_k)/log(r_k/r_k-1) of the last three
+    /// residuals (2 = quadratic); NaN if fewer than three are meaningful.
+    double              convergence_rate = std::numeric_limits<double>::quiet_NaN();
+    std::string         failure;
+    AssemblyInfo        info;
+  };
+
+  /**
+   * Newton's method for R(u) = 0 at one load time, with the Dirichlet data
+   * imposed through the update (so a shortened step still reaches them) and
+   * a backtracking line search on ||R|| over the free DoFs. A trial state
+   * that inverts an element (J <= 0) is always shortened.
+   *
+   * Converged when ||R|| <= rtol ||f_int|| + atol * force_scale (f_int holds
+   * the reactions, so the test is relative to the load carried) and the
+   * Dirichlet values are reached.
+   */
+  class NewtonSolver
+  {
+  public:
+    NewtonSolver(const NewtonParameters              &parameters,
+                 const Discretisation                &discretisation,
+                 const SystemAssembler               &assembler,
+                 LinearSolver                        &linear_solver,
+                 const std::deque<BoundaryCondition> &boundary_conditions,
+                 const double                         force_scale,
+                 dealii::ConditionalOStream          &verbose_out,
+                 dealii::TimerOutput                 &timer);
+
+    /// Sparsity pattern and vectors; call after every DoF distribution.
+    void
+    setup();
+
+    /**
+     * Solves at load time @p t starting from @p u (owned entries); on
+     * success @p u is the solution and @p internal_force holds f_int there.
+     * On failure @p u is unspecified: the caller restores its copy.
+     */
+    NewtonReport
+    solve(const double                                 t,
+          dealii::TrilinosWrappers::MPI::BlockVector &u,
+          dealii::TrilinosWrappers::MPI::BlockVector &internal_force);
+
+  private:
+    const NewtonParameters              &parameters;
+    const Discretisation                &discretisation;
+    const SystemAssembler               &assembler;
+    LinearSolver                        &linear_solver;
+    const std::deque<BoundaryCondition> &boundary_conditions;
+    const double                         force_scale;
+    dealii::ConditionalOStream          &verbose_out;
+    dealii::TimerOutput                 &timer;
+
+    dealii::TrilinosWrappers::BlockSparseMatrix tangent;
+    dealii::TrilinosWrappers::MPI::BlockVector  newton_rhs, residual, delta,
+      u_ghosted;
+  };
+} // namespace DuctileContact

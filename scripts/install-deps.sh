@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs the Debian packages ductile-contact needs, skipping those already present.
+# Works as root, or as a normal user through sudo. Usage: scripts/install-deps.sh [--plots]
+#   --plots  also installs python3-matplotlib (only the benchmark plot scripts need it)
+set -euo pipefail
+
+packages=(cmake make g++ libdeal.ii-dev openmpi-bin numdiff libopenblas0-pthread)
+if [[ "${1:-}" == "--plots" ]]; then
+  packages+=(python3-matplotlib)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "-- all required Debian packages are installed"
+  exit 0
+fi
+
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || { echo "error: not root and sudo is missing; install: ${missing[*]}" >&2; exit 1; }
+  sudo_cmd=(sudo)
+fi
+
+echo "-- installing: ${missing[*]}"
+"${sudo_cmd[@]}" apt-get update -q
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,205 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <ductile_contact/app/application.h>
+#include <ductile_contact/app/simulation.h>
+#include <ductile_contact/core/input_error.h>
+#include <ductile_contact/mesh/scene.h>
+#include <ductile_contact/output/tee_stream.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    const char *usage =
+      "Usage: ductile-contact [--validate] [--print-parameters] FILE.prm\n"
+      "       mpirun -np N ductile-contact FILE.prm\n"
+      "  --validate          parse and check FILE.prm (and its scene), then "
+      "exit: 0 if valid\n"
+      "  --print-parameters  print every entry with its default, pattern and "
+      "documentation (the values of FILE.prm if given) and exit\n";
+
+    std::string
+    join(const std::set<unsigned int> &ids)
+    {
+      std::ostringstream s;
+      for (auto it = ids.begin(); it != ids.end(); ++it)
+        s << (it == ids.begin() ? "" : ", ") << *it;
+      return s.str();
+    }
+  } // namespace
+
+
+
+  void
+  build_and_check_mesh(const RunParameters                        &parameters,
+                       parallel::distributed::Triangulation<dim> &tria,
+                       const bool                                  refine)
+  {
+    MeshParameters mesh = parameters.mesh;
+    if (!refine)
+      {
+        mesh.global_refinements = 0;
+        mesh.refinement_boxes.clear();
+      }
+    create_scene_mesh(mesh, tria);
+
+    std::set<unsigned int> in_mesh, listed;
+    for (const auto id : material_ids_in_mesh(tria))
+      in_mesh.insert(id);
+    for (const BodyParameters &b : parameters.bodies)
+      listed.insert(b.material_id);
+    if (in_mesh != listed)
+      throw InputError("Bodies/Material ids",
+                       join(listed),
+                       "the mesh of scene '" + parameters.mesh.scene +
+                         "' has the material ids " + join(in_mesh) +
+                         "; list exactly these, each with a subsection "
+                         "'Body <id>'");
+
+    std::set<unsigned int> boundaries;
+    for (const auto id : boundary_ids_in_mesh(tria))
+      boundaries.insert(id);
+    for (const BoundaryCondition &bc : parameters.boundary_conditions)
+      check_input(boundaries.count(bc.boundary_id) > 0,
+                  "Boundary conditions/Boundary ids",
+                  Utilities::to_string(bc.boundary_id),
+                  "the mesh of scene '" + parameters.mesh.scene +
+                    "' has no boundary with this id (it has " +
+                    join(boundaries) + ")");
+  }
+
+
+
+  int
+  run_application(int argc, char **argv, const MPI_Comm comm)
+  {
+    const bool   root = Utilities::MPI::this_mpi_process(comm) == 0;
+    bool         validate = false, print_parameters = false;
+    std::string  file_name;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string arg = argv[i];
+        if (arg == "--validate")
+          validate = true;
+        else if (arg == "--print-parameters")
+          print_parameters = true;
+        else if (arg == "-h" || arg == "--help")
+          {
+            if (root)
+              std::cout << usage;
+            return 0;
+          }
+        else if (!arg.empty() && arg[0] == '-')
+          {
+            if (root)
+              std::cerr << "Error: unknown option '" << arg << "'\n" << usage;
+            return 1;
+          }
+        else if (file_name.empty())
+          file_name = arg;
+        else
+          {
+            if (root)
+              std::cerr << "Error: more than one input file given ('"
+                        << file_name << "', '" << arg << "')\n" << usage;
+            return 1;
+          }
+      }
+    if (file_name.empty() && !print_parameters)
+      {
+        if (root)
+          std::cerr << "Error: no input file given\n" << usage;
+        return 1;
+      }
+
+    // Parse, check and (for --validate and runs) build the coarse scene:
+    // every input error surfaces here, before any work.
+    RunParameters parameters;
+    try
+      {
+        parameters.parse(file_name);
+        if (!print_parameters)
+          {
+            parallel::distributed::Triangulation<dim> coarse(comm);
+            build_and_check_mesh(parameters, coarse, false);
+          }
+      }
+    catch (const InputError &e)
+      {
+        if (root)
+          std::cerr << "Error in input file '" << file_name
+                    << "': " << e.what() << std::endl;
+        return 1;
+      }
+    catch (const ExceptionBase &e)
+      {
+        // ParameterHandler's messages name the line, entry, value and
+        // pattern; print them without deal.II's stack-trace header.
+        std::ostringstream info;
+        e.print_info(info);
+        if (root)
+          std::cerr << "Error in input file '" << file_name << "': "
+                    << Utilities::trim(info.str()) << std::endl;
+        return 1;
+      }
+
+    if (print_parameters)
+      {
+        if (root)
+          parameters.prm.print_parameters(
+            std::cout,
+            ParameterHandler::Description |
+              ParameterHandler::KeepDeclarationOrder);
+        return 0;
+      }
+    if (validate)
+      {
+        if (root)
+          std::cout << file_name << ": valid" << std::endl;
+        return 0;
+      }
+
+    // A run: results folder with a copy of the input and all parameters.
+    const std::string &dir = parameters.output.directory;
+    TeeStream          log(std::cout);
+    if (root)
+      {
+        std::error_code ec;
+        std::filesystem::create_directories(dir, ec);
+        if (ec || !std::filesystem::is_directory(dir))
+          std::cerr << "Error: cannot create the output directory '" << dir
+                    << "' (entry 'Output/Directory'): " << ec.message()
+                    << std::endl;
+      }
+    if (Utilities::MPI::broadcast(comm,
+                                  std::filesystem::is_directory(dir) ? 1 : 0,
+                                  0) == 0)
+      return 1;
+    if (root)
+      {
+        log.open_file(dir + "/log.txt");
+        std::filesystem::copy_file(
+          file_name,
+          dir + "/input.prm",
+          std::filesystem::copy_options::overwrite_existing);
+        std::ofstream all(dir + "/parameters.prm");
+        parameters.prm.print_parameters(
+          all, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
+      }
+    if (root)
+      log << "ductile-contact: " << file_name << " on "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s), results in "
+          << dir << "/" << std::endl;
+
+    Simulation simulation(parameters, comm, log);
+    return simulation.run();
+  }
+} // namespace DuctileContact

@@ -1,0 +1,174 @@
+#include <deal.II/base/utilities.h>
+
+#include <ductile_contact/app/run_parameters.h>
+#include <ductile_contact/core/input_error.h>
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    void
+    declare_lists(ParameterHandler          &prm,
+                  std::vector<unsigned int> &material_ids,
+                  std::vector<unsigned int> &boundary_ids)
+    {
+      prm.enter_subsection("Bodies");
+      prm.add_parameter(
+        "Material ids",
+        material_ids,
+        "Material ids of the bodies of the scene; each needs a subsection "
+        "'Body <id>' with its material (box: 0; two bodies: 0 = plate, 1 = "
+        "block; gmsh: the physical volume tags).",
+        Patterns::List(Patterns::Integer(0, 255), 1, 256, ","));
+      prm.leave_subsection();
+      prm.enter_subsection("Boundary conditions");
+      prm.add_parameter(
+        "Boundary ids",
+        boundary_ids,
+        "Boundary ids that carry conditions; each needs a subsection "
+        "'Boundary <id>'. Boundaries not listed are traction free.",
+        Patterns::List(Patterns::Integer(0, 254), 0, 255, ","));
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    check_unique(const std::vector<unsigned int> &ids,
+                 const std::string               &entry)
+    {
+      const std::set<unsigned int> unique(ids.begin(), ids.end());
+      std::ostringstream           text;
+      for (unsigned int i = 0; i < ids.size(); ++i)
+        text << (i ? ", " : "") << ids[i];
+      check_input(unique.size() == ids.size(),
+                  entry,
+                  text.str(),
+                  "every id may appear only once");
+    }
+  } // namespace
+
+
+
+  void
+  RunParameters::declare(const std::vector<unsigned int> &material_id_list,
+                         const std::vector<unsigned int> &boundary_id_list)
+  {
+    material_ids = material_id_list;
+    boundary_ids = boundary_id_list;
+
+    mesh.declare(prm);
+
+    prm.enter_subsection("Finite elements");
+    prm.add_parameter("Polynomial degree",
+                      fe_degree,
+                      "Degree p of the FE_Q elements of every field (u, "
+                      "alpha, s). The fourth-order phase field needs p >= 2.",
+                      Patterns::Integer(1, 4));
+    prm.leave_subsection();
+
+    declare_lists(prm, material_ids, boundary_ids);
+
+    bodies.clear();
+    for (const unsigned int id : material_ids)
+      {
+        bodies.emplace_back();
+        bodies.back().material_id = id;
+        bodies.back().declare(prm);
+      }
+    boundary_conditions.clear();
+    for (const unsigned int id : boundary_ids)
+      {
+        boundary_conditions.emplace_back();
+        boundary_conditions.back().boundary_id = id;
+        boundary_conditions.back().declare(prm);
+      }
+
+    load_stepping.declare(prm);
+    newton.declare(prm);
+    linear_solver.declare(prm);
+    output.declare(prm);
+  }
+
+
+
+  void
+  RunParameters::parse_string(const std::string &text)
+  {
+    // Pass 1: find out which Body / Boundary subsections exist.
+    std::vector<unsigned int> mids{0}, bids;
+    {
+      ParameterHandler first_pass;
+      declare_lists(first_pass, mids, bids);
+      first_pass.parse_input_from_string(text, "", true);
+    }
+    check_unique(mids, "Bodies/Material ids");
+    check_unique(bids, "Boundary conditions/Boundary ids");
+
+    // Pass 2: the full, strict parse.
+    prm.clear();
+    declare(mids, bids);
+    prm.parse_input_from_string(text, "", false);
+    check();
+  }
+
+
+
+  void
+  RunParameters::parse(const std::string &file_name)
+  {
+    if (file_name.empty())
+      {
+        // Defaults only, with one example Body and Boundary subsection so
+        // that --print-parameters documents their entries.
+        declare({0}, {0});
+        return;
+      }
+    std::ifstream in(file_name);
+    if (!in)
+      throw InputError("the input file '" + file_name +
+                       "' cannot be opened");
+    std::stringstream text;
+    text << in.rdbuf();
+    parse_string(text.str());
+  }
+
+
+
+  void
+  RunParameters::check()
+  {
+    mesh.check();
+    for (const BodyParameters &b : bodies)
+      b.check();
+    for (BoundaryCondition &bc : boundary_conditions)
+      bc.check();
+    load_stepping.check();
+    newton.check();
+    linear_solver.check();
+    output.check();
+  }
+
+
+
+  const BodyParameters &
+  RunParameters::body(const types::material_id id) const
+  {
+    for (const BodyParameters &b : bodies)
+      if (b.material_id == id)
+        return b;
+    throw InputError("Bodies/Material ids",
+                     Utilities::to_string(static_cast<unsigned int>(id)),
+                     "the mesh has cells with this material id, but it is not "
+                     "listed (add it and a subsection 'Body " +
+                       Utilities::to_string(static_cast<unsigned int>(id)) +
+                       "')");
+  }
+} // namespace DuctileContact

@@ -1,0 +1,331 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/hp/fe_values.h>
+
+#include <ductile_contact/app/application.h>
+#include <ductile_contact/app/simulation.h>
+#include <ductile_contact/output/solution_writer.h>
+#include <ductile_contact/solver/linear_solver.h>
+#include <ductile_contact/solver/newton_solver.h>
+#include <ductile_contact/solver/system_assembler.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  Simulation::Simulation(const RunParameters &parameters,
+                         const MPI_Comm       comm,
+                         TeeStream           &log)
+    : parameters(parameters)
+    , comm(comm)
+    , log(log)
+    , pcout(log, Utilities::MPI::this_mpi_process(comm) == 0)
+    , verbose_out(log,
+                  Utilities::MPI::this_mpi_process(comm) == 0 &&
+                    parameters.output.verbosity >= 2)
+    , timer(comm, pcout, TimerOutput::summary, TimerOutput::wall_times)
+    , triangulation(comm)
+    , statistics(parameters.output.directory + "/statistics")
+  {
+    for (const BodyParameters &b : parameters.bodies)
+      bodies[b.material_id] = &b;
+  }
+
+
+
+  Simulation::~Simulation() = default;
+
+
+
+  void
+  Simulation::setup()
+  {
+    {
+      TimerOutput::Scope scope(timer, "setup: mesh");
+      build_and_check_mesh(parameters, triangulation, true);
+    }
+
+    std::map<types::material_id, BodyFields> fields;
+    for (const BodyParameters &b : parameters.bodies)
+      fields[b.material_id] = BodyFields{b.plasticity, b.fracture};
+    {
+      TimerOutput::Scope scope(timer, "setup: dofs");
+      discretisation = std::make_unique<Discretisation>(triangulation,
+                                                        parameters.fe_degree,
+                                                        fields);
+      discretisation->setup();
+    }
+
+    // Force scale of the absolute Newton tolerance: mu_max * diameter^2.
+    Point<dim> lo, hi;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lo[d] = std::numeric_limits<double>::max();
+        hi[d] = -std::numeric_limits<double>::max();
+      }
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      for (const unsigned int v : cell->vertex_indices())
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lo[d] = std::min(lo[d], cell->vertex(v)[d]);
+            hi[d] = std::max(hi[d], cell->vertex(v)[d]);
+          }
+    double mu_max = 0;
+    for (const BodyParameters &b : parameters.bodies)
+      mu_max = std::max(mu_max, b.shear_modulus);
+    const double force_scale = mu_max * lo.distance_square(hi);
+
+    assembler = std::make_unique<SystemAssembler>(
+      *discretisation, bodies, parameters.boundary_conditions);
+    linear_solver =
+      std::make_unique<LinearSolver>(parameters.linear_solver, *discretisation);
+    {
+      TimerOutput::Scope scope(timer, "setup: rigid-body modes");
+      linear_solver->setup();
+    }
+    newton = std::make_unique<NewtonSolver>(parameters.newton,
+                                            *discretisation,
+                                            *assembler,
+                                            *linear_solver,
+                                            parameters.boundary_conditions,
+                                            force_scale,
+                                            verbose_out,
+                                            timer);
+    newton->setup();
+    writer = std::make_unique<SolutionWriter>(parameters.output.directory,
+                                              *discretisation,
+                                              bodies);
+
+    for (auto *v : {&u, &internal_force, &previous_internal_force})
+      v->reinit(discretisation->owned_partitioning, comm);
+    u_ghosted.reinit(discretisation->owned_partitioning,
+                     discretisation->relevant_partitioning,
+                     comm);
+
+    boundary_dofs.clear();
+    for (const BoundaryCondition &bc : parameters.boundary_conditions)
+      {
+        std::array<IndexSet, dim> per_component;
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            std::vector<bool> mask(Component::n_components, false);
+            mask[c] = true;
+            per_component[c] =
+              DoFTools::extract_boundary_dofs(discretisation->dof_handler,
+                                              ComponentMask(mask),
+                                              {bc.boundary_id});
+            per_component[c] = per_component[c] & discretisation->locally_owned_dofs;
+          }
+        boundary_dofs.push_back(per_component);
+      }
+
+    const auto &n = discretisation->dofs_per_block;
+    std::ostringstream body_list;
+    for (const BodyParameters &b : parameters.bodies)
+      body_list << (b.material_id == parameters.bodies.front().material_id ?
+                      "" :
+                      ", ")
+                << b.name << " (id " << static_cast<unsigned>(b.material_id)
+                << ")";
+    pcout << "Mesh: " << triangulation.n_global_active_cells()
+          << " cells on " << Utilities::MPI::n_mpi_processes(comm)
+          << " MPI rank(s); bodies: " << body_list.str() << std::endl
+          << "DoFs: " << discretisation->dof_handler.n_dofs() << " (u "
+          << n[Block::displacement] << ", alpha " << n[Block::hardening]
+          << ", s " << n[Block::phase_field] << "), FE_Q("
+          << parameters.fe_degree << ")" << std::endl;
+  }
+
+
+
+  std::vector<double>
+  Simulation::boundary_means(const TrilinosWrappers::MPI::BlockVector &u) const
+  {
+    // Area-weighted mean displacement of each boundary with conditions.
+    const unsigned int  n_bc = parameters.boundary_conditions.size();
+    std::vector<double> sums(n_bc * (dim + 1), 0.);
+    std::map<types::boundary_id, unsigned int> index;
+    for (unsigned int b = 0; b < n_bc; ++b)
+      index[parameters.boundary_conditions[b].boundary_id] = b;
+
+    hp::FEFaceValues<dim> hp_face_values(discretisation->mapping,
+                                         discretisation->fe_collection,
+                                         discretisation->face_quadrature,
+                                         update_values | update_JxW_values);
+    std::vector<Tensor<1, dim>> values;
+    for (const auto &cell : discretisation->dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const auto it = index.find(cell->face(f)->boundary_id());
+              if (it == index.end())
+                continue;
+              hp_face_values.reinit(cell, f);
+              const auto &fv = hp_face_values.get_present_fe_values();
+              values.resize(fv.n_quadrature_points);
+              fv[discretisation->displacement].get_function_values(u, values);
+              for (unsigned int q = 0; q < values.size(); ++q)
+                {
+                  for (unsigned int d = 0; d < dim; ++d)
+                    sums[it->second * (dim + 1) + d] += values[q][d] * fv.JxW(q);
+                  sums[it->second * (dim + 1) + dim] += fv.JxW(q);
+                }
+            }
+    Utilities::MPI::sum(sums, comm, sums);
+    std::vector<double> means;
+    for (unsigned int b = 0; b < n_bc; ++b)
+      for (unsigned int d = 0; d < dim; ++d)
+        means.push_back(sums[b * (dim + 1) + d] / sums[b * (dim + 1) + dim]);
+    return means;
+  }
+
+
+
+  void
+  Simulation::record_step(const unsigned int step,
+                          const double       t,
+                          const double       dt,
+                          const unsigned int newton_iterations,
+                          const unsigned int linear_iterations,
+                          const unsigned int cutbacks,
+                          const double       stored_energy)
+  {
+    statistics.add("step", step);
+    statistics.add("time", t);
+    statistics.add("dt", dt);
+    const std::vector<double> means = boundary_means(u_ghosted);
+    const char               *xyz[] = {"x", "y", "z"};
+    for (unsigned int b = 0; b < parameters.boundary_conditions.size(); ++b)
+      {
+        const std::string id =
+          Utilities::to_string(parameters.boundary_conditions[b].boundary_id);
+        for (unsigned int d = 0; d < dim; ++d)
+          statistics.add("u" + id + "_" + xyz[d], means[b * dim + d]);
+        // Force transmitted through the boundary: the sum of the internal
+        // force vector over its DoFs (reaction on constrained components,
+        // applied traction on the others).
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            double force = 0;
+            for (const auto i : boundary_dofs[b][d])
+              force += internal_force(i);
+            statistics.add("F" + id + "_" + xyz[d],
+                           Utilities::MPI::sum(force, comm));
+          }
+      }
+    statistics.add("stored_energy", stored_energy);
+    statistics.add("external_work", external_work);
+    statistics.add("energy_residual", external_work - stored_energy);
+    statistics.add("newton_iterations", newton_iterations);
+    statistics.add("linear_iterations", linear_iterations);
+    statistics.add("cutbacks", cutbacks);
+    statistics.add("wall_time", MPI_Wtime() - wall_start);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      statistics.write();
+  }
+
+
+
+  int
+  Simulation::run()
+  {
+    wall_start = MPI_Wtime();
+    setup();
+
+    const auto  &ls       = parameters.load_stepping;
+    const double T        = ls.end_time;
+    const double eps      = 1e-12 * T;
+    const auto   n_steps  = static_cast<unsigned int>(std::ceil(T / ls.time_step - 1e-9));
+    double       t        = 0;
+    double       dt       = ls.time_step;
+    unsigned int step     = 0;
+    unsigned int interval = parameters.output.interval;
+
+    u         = 0;
+    u_ghosted = u;
+    record_step(0, 0., 0., 0, 0, 0, 0.);
+    if (interval > 0)
+      writer->write(0, 0., u_ghosted);
+
+    unsigned int cutbacks = 0;
+    while (t < T - eps)
+      {
+        const double                       dt_try = std::min(dt, T - t);
+        const TrilinosWrappers::MPI::BlockVector u_old = u;
+        const NewtonReport report = newton->solve(t + dt_try, u, internal_force);
+
+        if (!report.converged)
+          {
+            u = u_old;
+            dt = 0.5 * dt_try;
+            ++cutbacks;
+            pcout << "  step at t = " << t + dt_try << " failed ("
+                  << report.failure << "); cutting back to dt = " << dt
+                  << std::endl;
+            if (dt < ls.minimum_time_step)
+              {
+                pcout << "Error: the load step would have to be smaller than "
+                         "'Load stepping/Minimum time step' = "
+                      << ls.minimum_time_step << " at t = " << t
+                      << ". Results up to this time are in '"
+                      << parameters.output.directory << "'." << std::endl;
+                return 2;
+              }
+            continue;
+          }
+
+        // Accepted step.
+        t += dt_try;
+        ++step;
+        {
+          TrilinosWrappers::MPI::BlockVector du = u;
+          du -= u_old;
+          external_work += 0.5 * (internal_force * du + previous_internal_force * du);
+        }
+        previous_internal_force = internal_force;
+        u_ghosted               = u;
+        record_step(step,
+                    t,
+                    dt_try,
+                    report.iterations,
+                    report.linear_iterations,
+                    cutbacks,
+                    report.info.stored_energy);
+        const bool last = (t >= T - eps);
+        if (interval > 0 && (step % interval == 0 || last))
+          {
+            TimerOutput::Scope scope(timer, "output");
+            writer->write(step, t, u_ghosted);
+          }
+
+        const double elapsed = MPI_Wtime() - wall_start;
+        pcout << "step " << std::setw(4) << step << " (~" << step << "/"
+              << std::max(n_steps, step) << ")  t = " << std::setw(10) << std::left
+              << t << std::right << " Newton " << std::setw(2)
+              << report.iterations << " (linear " << report.linear_iterations
+              << ")";
+        if (std::isfinite(report.convergence_rate))
+          pcout << " rate " << std::fixed << std::setprecision(2)
+                << report.convergence_rate << std::defaultfloat
+                << std::setprecision(6);
+        pcout << "  min J " << std::setprecision(4) << report.info.min_J
+              << std::setprecision(6) << "  " << std::fixed
+              << std::setprecision(1) << elapsed << " s, ~"
+              << elapsed / t * (T - t) << " s left" << std::defaultfloat
+              << std::setprecision(6) << std::endl;
+
+        cutbacks = 0;
+        if (report.iterations <= ls.easy_newton_steps)
+          dt = std::min(dt_try * ls.growth_factor, ls.time_step);
+        else
+          dt = dt_try;
+      }
+    return 0;
+  }
+} // namespace DuctileContact

@@ -1,0 +1,187 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
+
+#include <ductile_contact/core/input_error.h>
+#include <ductile_contact/discretisation/boundary_condition.h>
+
+#include <map>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  std::string
+  BoundaryCondition::subsection() const
+  {
+    return "Boundary " + Utilities::to_string(boundary_id);
+  }
+
+
+
+  void
+  BoundaryCondition::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection());
+    prm.add_parameter(
+      "Constrained components",
+      constrained_components_text,
+      "Displacement components prescribed on this boundary (Dirichlet), a "
+      "comma-separated subset of x, y, z; empty: none. The other components "
+      "carry the traction below.",
+      Patterns::Anything());
+    prm.add_parameter(
+      "Displacement",
+      displacement_text,
+      "Prescribed displacement ubar(x, y, z, t) [m], three expressions "
+      "separated by ';' (x, y, z are reference coordinates, t the load-step "
+      "time); only the constrained components are used.",
+      Patterns::Anything());
+    prm.add_parameter(
+      "Traction",
+      traction_text,
+      "Dead-load nominal traction T(x, y, z, t) [Pa] (force per reference "
+      "area), three expressions separated by ';'; applied to the "
+      "components that are not constrained.",
+      Patterns::Anything());
+    prm.add_parameter("Function constants",
+                      constants_text,
+                      "Constants usable in the expressions above, as "
+                      "'name=value, name=value'.",
+                      Patterns::Anything());
+    prm.leave_subsection();
+  }
+
+
+
+  namespace
+  {
+    std::map<std::string, double>
+    parse_constants(const std::string &text, const std::string &entry)
+    {
+      std::map<std::string, double> constants;
+      for (const std::string &item : Utilities::split_string_list(text, ','))
+        {
+          if (item.empty())
+            continue;
+          const auto kv = Utilities::split_string_list(item, '=');
+          check_input(kv.size() == 2 && !kv[0].empty(),
+                      entry,
+                      text,
+                      "constants must read 'name=value, name=value'");
+          try
+            {
+              constants[kv[0]] = Utilities::string_to_double(kv[1]);
+            }
+          catch (...)
+            {
+              throw InputError(entry,
+                               text,
+                               "the value of '" + kv[0] +
+                                 "' must be a number");
+            }
+        }
+      return constants;
+    }
+
+
+
+    std::unique_ptr<FunctionParser<dim>>
+    parse_vector_function(std::string                          expressions,
+                          const unsigned int                   n_padding,
+                          const std::map<std::string, double> &constants,
+                          const std::string                   &entry)
+    {
+      const auto parts = Utilities::split_string_list(expressions, ';');
+      check_input(parts.size() == dim,
+                  entry,
+                  expressions,
+                  "it needs three expressions separated by ';'");
+      for (unsigned int i = 0; i < n_padding; ++i)
+        expressions += "; 0";
+      auto function = std::make_unique<FunctionParser<dim>>(dim + n_padding);
+      try
+        {
+          function->initialize("x,y,z,t", expressions, constants, true);
+          // muparser only reports unknown names on evaluation: do it now,
+          // before any work.
+          Vector<double> values(dim + n_padding);
+          function->vector_value(Point<dim>(), values);
+        }
+      catch (const ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          throw InputError(entry,
+                           expressions,
+                           "it is not a valid expression of x, y, z, t (" +
+                             Utilities::trim(info.str()) + ")");
+        }
+      return function;
+    }
+  } // namespace
+
+
+
+  void
+  BoundaryCondition::check()
+  {
+    const std::string prefix = subsection() + "/";
+
+    constrained = {{false, false, false}};
+    for (const std::string &c :
+         Utilities::split_string_list(constrained_components_text, ','))
+      {
+        check_input(c == "x" || c == "y" || c == "z",
+                    prefix + "Constrained components",
+                    constrained_components_text,
+                    "it must be a comma-separated subset of x, y, z");
+        constrained[c[0] - 'x'] = true;
+      }
+
+    const auto constants =
+      parse_constants(constants_text, prefix + "Function constants");
+    displacement = parse_vector_function(displacement_text,
+                                         Component::n_components - dim,
+                                         constants,
+                                         prefix + "Displacement");
+    traction =
+      parse_vector_function(traction_text, 0, constants, prefix + "Traction");
+
+    std::string stripped;
+    for (const char ch : traction_text)
+      if (ch != ' ')
+        stripped += ch;
+    has_traction = (stripped != "0;0;0");
+  }
+
+
+
+  bool
+  BoundaryCondition::has_dirichlet() const
+  {
+    return constrained[0] || constrained[1] || constrained[2];
+  }
+
+
+
+  ComponentMask
+  BoundaryCondition::dirichlet_mask() const
+  {
+    std::vector<bool> mask(Component::n_components, false);
+    for (unsigned int d = 0; d < dim; ++d)
+      mask[Component::first_displacement + d] = constrained[d];
+    return ComponentMask(mask);
+  }
+
+
+
+  Tensor<1, dim>
+  BoundaryCondition::traction_at(const Point<dim> &p, const double t) const
+  {
+    traction->set_time(t);
+    Tensor<1, dim> T;
+    for (unsigned int d = 0; d < dim; ++d)
+      T[d] = constrained[d] ? 0. : traction->value(p, d);
+    return T;
+  }
+} // namespace DuctileContact

@@ -1,0 +1,106 @@
+#include <deal.II/physics/elasticity/standard_tensors.h>
+
+#include <ductile_contact/materials/neo_hooke.h>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+  using StandardTensors = Physics::Elasticity::StandardTensors<dim>;
+
+  namespace
+  {
+    struct Kinematics
+    {
+      double                  J;
+      SymmetricTensor<2, dim> b_bar;
+    };
+
+    Kinematics
+    kinematics(const Tensor<2, dim> &F)
+    {
+      Kinematics k;
+      k.J     = determinant(F);
+      k.b_bar = std::pow(k.J, -2. / 3.) * symmetrize(F * transpose(F));
+      return k;
+    }
+  } // namespace
+
+
+
+  SymmetricTensor<4, dim>
+  neo_hooke_spatial_tangent(const Tensor<2, dim> &F,
+                            const double          mu,
+                            const double          kappa)
+  {
+    const Kinematics              k   = kinematics(F);
+    const double                  J   = k.J;
+    const SymmetricTensor<2, dim> &I  = StandardTensors::I;
+    const SymmetricTensor<2, dim> tau_iso = mu * deviator(k.b_bar);
+
+    const SymmetricTensor<4, dim> c_vol =
+      kappa * (2. * J * J - J) * StandardTensors::IxI -
+      2. * kappa * (J * J - J) * StandardTensors::S;
+    const SymmetricTensor<4, dim> c_iso =
+      (2. / 3.) * mu * trace(k.b_bar) * StandardTensors::dev_P -
+      (2. / 3.) * (outer_product(tau_iso, I) + outer_product(I, tau_iso));
+    return c_vol + c_iso;
+  }
+
+
+
+  Tensor<4, dim>
+  first_elasticity_tensor(const Tensor<2, dim>          &F_inv,
+                          const SymmetricTensor<4, dim> &c,
+                          const SymmetricTensor<2, dim> &tau)
+  {
+    // tmp_abcD = sum_d (c_abcd + delta_ac tau_bd) F^{-1}_Dd
+    double tmp[dim][dim][dim][dim];
+    for (unsigned int a = 0; a < dim; ++a)
+      for (unsigned int b = 0; b < dim; ++b)
+        for (unsigned int cc = 0; cc < dim; ++cc)
+          for (unsigned int D = 0; D < dim; ++D)
+            {
+              double sum = 0;
+              for (unsigned int d = 0; d < dim; ++d)
+                sum += (c[a][b][cc][d] + (a == cc ? tau[b][d] : 0.)) *
+                       F_inv[D][d];
+              tmp[a][b][cc][D] = sum;
+            }
+    Tensor<4, dim> A;
+    for (unsigned int a = 0; a < dim; ++a)
+      for (unsigned int B = 0; B < dim; ++B)
+        for (unsigned int cc = 0; cc < dim; ++cc)
+          for (unsigned int D = 0; D < dim; ++D)
+            {
+              double sum = 0;
+              for (unsigned int b = 0; b < dim; ++b)
+                sum += F_inv[B][b] * tmp[a][b][cc][D];
+              A[a][B][cc][D] = sum;
+            }
+    return A;
+  }
+
+
+
+  MaterialResponse
+  neo_hooke(const Tensor<2, dim> &F,
+            const double          mu,
+            const double          kappa,
+            const bool            with_tangent)
+  {
+    const Kinematics k = kinematics(F);
+    MaterialResponse r;
+    r.J   = k.J;
+    r.psi = 0.5 * kappa * (k.J - 1.) * (k.J - 1.) +
+            0.5 * mu * (trace(k.b_bar) - 3.);
+    r.tau = kappa * (k.J * k.J - k.J) * StandardTensors::I +
+            mu * deviator(k.b_bar);
+    const Tensor<2, dim> F_inv = invert(F);
+    r.P                        = Tensor<2, dim>(r.tau) * transpose(F_inv);
+    if (with_tangent)
+      r.A = first_elasticity_tensor(F_inv,
+                                    neo_hooke_spatial_tangent(F, mu, kappa),
+                                    r.tau);
+    return r;
+  }
+} // namespace DuctileContact

@@ -1,0 +1,200 @@
+#include <deal.II/base/utilities.h>
+
+#include <ductile_contact/core/input_error.h>
+#include <ductile_contact/mesh/mesh_parameters.h>
+
+#include <fstream>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  void
+  MeshParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    prm.add_parameter(
+      "Scene",
+      scene,
+      "Which coarse mesh to build. 'box': one body, a brick given in "
+      "subsection Box, boundary ids 0..5 on the faces x-, x+, y-, y+, z-, z+. "
+      "'two bodies': the plate and block of the paper's scene (model.md "
+      "section 7), see subsection Two bodies for the ids. 'gmsh': a mesh "
+      "read from a Gmsh .msh file; physical volume tags become material ids "
+      "(bodies), physical surface tags become boundary ids.",
+      Patterns::Selection("box|two bodies|gmsh"));
+    prm.add_parameter("Global refinements",
+                      global_refinements,
+                      "Number of uniform refinements of the coarse mesh.",
+                      Patterns::Integer(0, 12));
+    prm.add_parameter(
+      "Local refinement boxes",
+      refinement_boxes_text,
+      "Boxes in which cells are refined further, after the global "
+      "refinements: 'x0,y0,z0 : x1,y1,z1 : n' with the lower and upper "
+      "corners [m] and the number n of extra refinements; several boxes are "
+      "separated by ';'. A cell is refined if its centre lies in the box. "
+      "Empty: no local refinement.",
+      Patterns::Anything());
+
+    prm.enter_subsection("Box");
+    prm.add_parameter("Lower corner",
+                      box.lower_corner,
+                      "Lower corner (x, y, z) of the box [m].");
+    prm.add_parameter("Upper corner",
+                      box.upper_corner,
+                      "Upper corner (x, y, z) of the box [m].");
+    prm.add_parameter("Subdivisions",
+                      box.subdivisions,
+                      "Number of coarse cells along x, y, z.",
+                      Patterns::List(Patterns::Integer(1), 3, 3, ","));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Two bodies");
+    prm.add_parameter(
+      "Plate size",
+      two_bodies.plate_size,
+      "Plate [0,Lx]x[0,Ly]x[0,Lz] [m]. Boundary ids: 1 = clamped face x = Lx, "
+      "3 = top face z = Lz (contact surface of the plate), 0 = other plate "
+      "faces; block: 2 = top face, 4 = bottom face (contact surface of the "
+      "block), 5 = its side faces. Material ids: 0 = plate, 1 = block.");
+    prm.add_parameter("Plate subdivisions",
+                      two_bodies.plate_subdivisions,
+                      "Number of coarse plate cells along x, y, z.",
+                      Patterns::List(Patterns::Integer(1), 3, 3, ","));
+    prm.add_parameter("Block edge",
+                      two_bodies.block_edge,
+                      "Edge length of the cubic block [m].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Block subdivisions",
+                      two_bodies.block_subdivisions,
+                      "Number of coarse block cells along x, y, z.",
+                      Patterns::List(Patterns::Integer(1), 3, 3, ","));
+    prm.add_parameter("Block centre",
+                      two_bodies.block_centre,
+                      "In-plane position (x, y) of the block's centre [m].",
+                      Patterns::List(Patterns::Double(), 2, 2, ","));
+    prm.add_parameter("Block gap",
+                      two_bodies.block_gap,
+                      "Distance between the plate's top face and the block's "
+                      "bottom face [m]; 0 = touching.",
+                      Patterns::Double(0.));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Gmsh");
+    prm.add_parameter("File name",
+                      gmsh.file_name,
+                      "Gmsh .msh file (format 2.2 or 4.1, hexahedra), "
+                      "relative to the directory the program is started in.",
+                      Patterns::Anything());
+    prm.leave_subsection();
+
+    prm.leave_subsection();
+  }
+
+
+
+  namespace
+  {
+    Point<dim>
+    parse_point(const std::string &text, const std::string &entry)
+    {
+      const auto coords =
+        Utilities::split_string_list(Utilities::trim(text), ',');
+      check_input(coords.size() == dim,
+                  entry,
+                  text,
+                  "a point needs three comma-separated coordinates");
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        try
+          {
+            p[d] = Utilities::string_to_double(coords[d]);
+          }
+        catch (...)
+          {
+            throw InputError(entry, text, "coordinates must be numbers");
+          }
+      return p;
+    }
+  } // namespace
+
+
+
+  void
+  MeshParameters::check()
+  {
+    const std::string boxes_entry = "Mesh/Local refinement boxes";
+    refinement_boxes.clear();
+    for (const std::string &box_text :
+         Utilities::split_string_list(refinement_boxes_text, ';'))
+      {
+        if (Utilities::trim(box_text).empty())
+          continue;
+        const auto parts = Utilities::split_string_list(box_text, ':');
+        check_input(parts.size() == 3,
+                    boxes_entry,
+                    box_text,
+                    "each box must read 'x0,y0,z0 : x1,y1,z1 : n'");
+        RefinementBox b;
+        b.lower = parse_point(parts[0], boxes_entry);
+        b.upper = parse_point(parts[1], boxes_entry);
+        int levels = -1;
+        try
+          {
+            levels = Utilities::string_to_int(parts[2]);
+          }
+        catch (...)
+          {}
+        check_input(levels >= 1 && levels <= 8,
+                    boxes_entry,
+                    box_text,
+                    "the number of extra refinements must be an integer "
+                    "between 1 and 8");
+        b.levels = levels;
+        for (unsigned int d = 0; d < dim; ++d)
+          check_input(b.lower[d] < b.upper[d],
+                      boxes_entry,
+                      box_text,
+                      "the lower corner must be below the upper corner in "
+                      "every coordinate");
+        refinement_boxes.push_back(b);
+      }
+
+    if (scene == "box")
+      for (unsigned int d = 0; d < dim; ++d)
+        check_input(box.lower_corner[d] < box.upper_corner[d],
+                    "Mesh/Box/Upper corner",
+                    Utilities::to_string(box.upper_corner[d]),
+                    "the upper corner must exceed the lower corner (" +
+                      Utilities::to_string(box.lower_corner[d]) +
+                      ") in every coordinate");
+
+    if (scene == "two bodies")
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          check_input(two_bodies.plate_size[d] > 0.,
+                      "Mesh/Two bodies/Plate size",
+                      Utilities::to_string(two_bodies.plate_size[d]),
+                      "all plate dimensions must be positive");
+        check_input(two_bodies.block_edge > 0.,
+                    "Mesh/Two bodies/Block edge",
+                    Utilities::to_string(two_bodies.block_edge),
+                    "the block edge must be positive");
+      }
+
+    if (scene == "gmsh")
+      {
+        check_input(!gmsh.file_name.empty(),
+                    "Mesh/Gmsh/File name",
+                    gmsh.file_name,
+                    "scene 'gmsh' needs the name of a .msh file");
+        std::ifstream in(gmsh.file_name);
+        check_input(static_cast<bool>(in),
+                    "Mesh/Gmsh/File name",
+                    gmsh.file_name,
+                    "this file cannot be opened (it must exist and be "
+                    "readable, relative to the working directory)");
+      }
+  }
+} // namespace DuctileContact

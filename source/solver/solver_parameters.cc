@@ -1,0 +1,157 @@
+#include <deal.II/base/utilities.h>
+
+#include <ductile_contact/core/input_error.h>
+#include <ductile_contact/solver/solver_parameters.h>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  void
+  LoadSteppingParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load stepping");
+    prm.add_parameter("End time",
+                      end_time,
+                      "Final value of the load-step time t [-]; boundary "
+                      "data are functions of t.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Time step",
+                      time_step,
+                      "Nominal (and largest) load-step increment of t.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Minimum time step",
+                      minimum_time_step,
+                      "The run gives up when a failing step would need a "
+                      "smaller increment than this.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Growth factor",
+                      growth_factor,
+                      "After an easy step (see below), the increment grows by "
+                      "this factor, up to the nominal time step.",
+                      Patterns::Double(1.));
+    prm.add_parameter("Easy step Newton iterations",
+                      easy_newton_steps,
+                      "A step that converged in at most this many Newton "
+                      "iterations counts as easy.",
+                      Patterns::Integer(1));
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  LoadSteppingParameters::check() const
+  {
+    check_input(end_time > 0.,
+                "Load stepping/End time",
+                Utilities::to_string(end_time),
+                "it must be positive");
+    check_input(time_step > 0.,
+                "Load stepping/Time step",
+                Utilities::to_string(time_step),
+                "it must be positive");
+    check_input(minimum_time_step > 0. && minimum_time_step <= time_step,
+                "Load stepping/Minimum time step",
+                Utilities::to_string(minimum_time_step),
+                "it must be positive and not larger than Time step (" +
+                  Utilities::to_string(time_step) + ")");
+  }
+
+
+
+  void
+  NewtonParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    prm.add_parameter("Maximum iterations",
+                      max_iterations,
+                      "Newton iterations per load step before the step is "
+                      "cut back.",
+                      Patterns::Integer(1, 200));
+    prm.add_parameter(
+      "Relative tolerance",
+      relative_tolerance,
+      "Converged when the residual norm on free DoFs is below this times "
+      "the norm of the internal force vector (which includes reactions).",
+      Patterns::Double(0., 1.));
+    prm.add_parameter(
+      "Absolute tolerance",
+      absolute_tolerance,
+      "Also converged when the residual norm is below this times mu_max * "
+      "diameter^2 (largest shear modulus times squared domain diameter, a "
+      "force scale) [-]; guards unloaded steps.",
+      Patterns::Double(0., 1.));
+    prm.add_parameter("Line search",
+                      line_search,
+                      "Backtracking line search on the residual norm; a step "
+                      "that inverts an element (J <= 0) is always shortened.");
+    prm.add_parameter("Maximum line search steps",
+                      max_line_search_steps,
+                      "Halvings of the Newton update before the step counts "
+                      "as failed.",
+                      Patterns::Integer(0, 30));
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  NewtonParameters::check() const
+  {
+    check_input(relative_tolerance > 0. || absolute_tolerance > 0.,
+                "Newton/Relative tolerance",
+                "0",
+                "at least one of Relative tolerance and Absolute tolerance "
+                "must be positive");
+  }
+
+
+
+  void
+  LinearSolverParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    prm.add_parameter(
+      "Type",
+      type,
+      "direct: sparse LU (Trilinos Amesos, see Direct solver); cg-amg: CG "
+      "preconditioned by Trilinos ML AMG with the six rigid-body modes; "
+      "gmres-amg: GMRES with the same AMG (for non-symmetric tangents).",
+      Patterns::Selection("direct|cg-amg|gmres-amg"));
+    prm.add_parameter("Direct solver",
+                      direct_solver,
+                      "Amesos package used by Type = direct.",
+                      Patterns::Selection("Amesos_Klu|Amesos_Mumps"));
+    prm.add_parameter("Relative tolerance",
+                      relative_tolerance,
+                      "Iterative solvers stop when the residual is below "
+                      "this times the right-hand side norm.",
+                      Patterns::Double(0., 1.));
+    prm.add_parameter("Maximum iterations",
+                      max_iterations,
+                      "Iteration limit of the iterative solvers.",
+                      Patterns::Integer(1));
+    prm.add_parameter("AMG aggregation threshold",
+                      aggregation_threshold,
+                      "ML aggregation threshold (1e-4 is best measured for "
+                      "Q2 elasticity, see docs).",
+                      Patterns::Double(0., 1.));
+    prm.add_parameter("AMG smoother sweeps",
+                      smoother_sweeps,
+                      "Chebyshev smoother sweeps per AMG level.",
+                      Patterns::Integer(1, 10));
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  LinearSolverParameters::check() const
+  {
+    check_input(type == "direct" || relative_tolerance > 0.,
+                "Linear solver/Relative tolerance",
+                Utilities::to_string(relative_tolerance),
+                "an iterative solver needs a positive tolerance");
+  }
+} // namespace DuctileContact
