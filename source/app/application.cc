@@ -7,6 +7,7 @@
 #include <ductile_contact/mesh/scene.h>
 #include <ductile_contact/output/tee_stream.h>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -25,6 +26,33 @@ namespace DuctileContact
       "exit: 0 if valid\n"
       "  --print-parameters  print every entry with its default, pattern and "
       "documentation (the values of FILE.prm if given) and exit\n";
+
+    /// deal.II's multi-line parser messages as one line, with the line
+    /// number of the input file ("line 13: ...").
+    std::string
+    one_line(const std::string &message)
+    {
+      std::string out;
+      for (const char c : message)
+        if (!std::isspace(static_cast<unsigned char>(c)))
+          out += c;
+        else if (!out.empty() && out.back() != ' ')
+          out += ' ';
+      const std::string source = " of file <input string>";
+      const auto        pos    = out.find(source);
+      if (pos != std::string::npos)
+        out.erase(pos, source.size());
+      if (out.rfind("Line <", 0) == 0)
+        {
+          out.replace(0, 6, "line ");
+          const auto close = out.find('>');
+          if (close != std::string::npos)
+            out.erase(close, 1);
+        }
+      return Utilities::trim(out);
+    }
+
+
 
     std::string
     join(const std::set<unsigned int> &ids)
@@ -147,7 +175,7 @@ namespace DuctileContact
         e.print_info(info);
         if (root)
           std::cerr << "Error in input file '" << file_name << "': "
-                    << Utilities::trim(info.str()) << std::endl;
+                    << one_line(info.str()) << std::endl;
         return 1;
       }
 

@@ -1,0 +1,92 @@
+// Helpers shared by the ctest programs. Each test writes only converged,
+// O(1)-scaled quantities to the file 'output' (compared with numdiff); the
+// screen output of the runs goes to the harness' stdout, which is not
+// compared.
+#pragma once
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <ductile_contact/app/run_parameters.h>
+#include <ductile_contact/app/simulation.h>
+#include <ductile_contact/output/tee_stream.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace Testing
+{
+  /// Columns of a statistics table.
+  using Table = std::map<std::string, std::vector<double>>;
+
+  inline Table
+  read_statistics(const std::string &file_name)
+  {
+    std::ifstream in(file_name);
+    std::string   line;
+    std::getline(in, line);
+    std::istringstream       header(line);
+    std::vector<std::string> names;
+    for (std::string n; header >> n;)
+      names.push_back(n);
+    Table table;
+    while (std::getline(in, line))
+      {
+        std::istringstream row(line);
+        for (const auto &n : names)
+          {
+            std::string value;
+            row >> value;
+            table[n].push_back(std::stod(value));
+          }
+      }
+    return table;
+  }
+
+  /**
+   * Runs the scene in @p prm (text of a .prm file) with its results in
+   * folder @p directory and returns the statistics table. Throws if the run
+   * does not reach its end time.
+   */
+  inline Table
+  run_scene(const std::string &prm, const std::string &directory)
+  {
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    DuctileContact::RunParameters parameters;
+    parameters.parse_string(prm + "\nsubsection Output\n  set Directory = " +
+                            directory + "\nend\n");
+    if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+      std::filesystem::create_directories(directory);
+    MPI_Barrier(comm);
+    int code = 0;
+    {
+      DuctileContact::TeeStream    log(std::cout);
+      DuctileContact::Simulation simulation(parameters, comm, log);
+      code = simulation.run();
+    }
+    MPI_Barrier(comm);
+    if (code != 0)
+      throw std::runtime_error("run in " + directory + " failed");
+    return read_statistics(directory + "/statistics");
+  }
+
+  /// Relative difference, guarded for a zero reference.
+  inline double
+  relative_error(const double value, const double reference, const double scale)
+  {
+    return std::abs(value - reference) / std::max(std::abs(reference), scale);
+  }
+
+  /// "yes"/"no" for a condition: what the output file records.
+  inline const char *
+  yes_no(const bool condition)
+  {
+    return condition ? "yes" : "no";
+  }
+} // namespace Testing
