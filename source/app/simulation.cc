@@ -188,13 +188,11 @@ namespace DuctileContact
 
 
   void
-  Simulation::record_step(const unsigned int step,
-                          const double       t,
-                          const double       dt,
-                          const unsigned int newton_iterations,
-                          const unsigned int linear_iterations,
-                          const unsigned int cutbacks,
-                          const double       stored_energy)
+  Simulation::record_step(const unsigned int  step,
+                          const double        t,
+                          const double        dt,
+                          const NewtonReport &report,
+                          const unsigned int  cutbacks)
   {
     statistics.add("step", step);
     statistics.add("time", t);
@@ -219,11 +217,13 @@ namespace DuctileContact
                            Utilities::MPI::sum(force, comm));
           }
       }
+    const double stored_energy = report.info.stored_energy;
     statistics.add("stored_energy", stored_energy);
     statistics.add("external_work", external_work);
     statistics.add("energy_residual", external_work - stored_energy);
-    statistics.add("newton_iterations", newton_iterations);
-    statistics.add("linear_iterations", linear_iterations);
+    statistics.add("newton_iterations", report.iterations);
+    statistics.add("newton_rate", report.convergence_rate);
+    statistics.add("linear_iterations", report.linear_iterations);
     statistics.add("cutbacks", cutbacks);
     statistics.add("wall_time", MPI_Wtime() - wall_start);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -249,7 +249,7 @@ namespace DuctileContact
 
     u         = 0;
     u_ghosted = u;
-    record_step(0, 0., 0., 0, 0, 0, 0.);
+    record_step(0, 0., 0., NewtonReport(), 0);
     if (interval > 0)
       writer->write(0, 0., u_ghosted);
 
@@ -290,13 +290,7 @@ namespace DuctileContact
         }
         previous_internal_force = internal_force;
         u_ghosted               = u;
-        record_step(step,
-                    t,
-                    dt_try,
-                    report.iterations,
-                    report.linear_iterations,
-                    cutbacks,
-                    report.info.stored_energy);
+        record_step(step, t, dt_try, report, cutbacks);
         const bool last = (t >= T - eps);
         if (interval > 0 && (step % interval == 0 || last))
           {

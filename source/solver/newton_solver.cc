@@ -7,6 +7,7 @@
 #include <ductile_contact/solver/newton_solver.h>
 
 #include <cmath>
+#include <limits>
 #include <iomanip>
 
 namespace DuctileContact
@@ -102,7 +103,8 @@ namespace DuctileContact
         }
         const double r     = residual.l2_norm();
         const double scale = internal_force.l2_norm();
-        report.residual_norms.push_back(r);
+        if (!pending)
+          report.residual_norms.push_back(r);
         report.iterations = it;
 
         verbose_out << "      Newton " << std::setw(2) << it
@@ -120,8 +122,15 @@ namespace DuctileContact
                                parameters.absolute_tolerance * force_scale)
           {
             report.converged = true;
-            const auto &h    = report.residual_norms;
-            const auto  n    = h.size();
+            // Observed order from the last three residuals above round-off
+            // (a last residual at the floor of double precision says nothing
+            // about the rate).
+            const double floor = 1e3 * std::numeric_limits<double>::epsilon() *
+                                 std::max(scale, force_scale * 1e-16);
+            const auto &h = report.residual_norms;
+            std::size_t n = h.size();
+            while (n >= 3 && h[n - 1] <= floor)
+              --n;
             if (n >= 3 && h[n - 1] > 0 && h[n - 2] > 0 && h[n - 3] > 0 &&
                 h[n - 2] != h[n - 3])
               report.convergence_rate =

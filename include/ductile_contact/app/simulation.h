@@ -19,6 +19,7 @@ namespace DuctileContact
   class SystemAssembler;
   class LinearSolver;
   class NewtonSolver;
+  struct NewtonReport;
   class SolutionWriter;
 
   /**
@@ -46,13 +47,11 @@ namespace DuctileContact
     void
     setup();
     void
-    record_step(const unsigned int step,
-                const double       t,
-                const double       dt,
-                const unsigned int newton_iterations,
-                const unsigned int linear_iterations,
-                const unsigned int cutbacks,
-                const double       stored_energy);
+    record_step(const unsigned int        step,
+                const double              t,
+                const double              dt,
+                const NewtonReport      &report,
+                const unsigned int        cutbacks);
     std::vector<double>
     boundary_means(const dealii::TrilinosWrappers::MPI::BlockVector &u) const;
 

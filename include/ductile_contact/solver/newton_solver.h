@@ -22,6 +22,7 @@ namespace DuctileContact
     bool                converged          = false;
     unsigned int        iterations         = 0;
     unsigned int        linear_iterations  = 0;
+    /// ||R|| of the iterations whose Dirichlet data were reached.
     std::vector<double> residual_norms;
     /// Observed order log(r_k+1/r_k)/log(r_k/r_k-1) of the last three
     /// residuals (2 = quadratic); NaN if fewer than three are meaningful.

@@ -1,0 +1,137 @@
+// Equilibrium, load-step control and energy bookkeeping of the finite-strain
+// solver (neo-Hooke, mu = 1, kappa = 3):
+//  A. a column [0,1]x[0,1]x[0,2] clamped at its base (id 4) with a dead-load
+//     traction T = (0.05, 0.02, 0.1) on its top (id 5): the force through the
+//     top equals T A and the base reaction equals -T A (1e-8 relative);
+//  B. the column clamped at the base, its top moved by (0.3, 0, -0.5): one
+//     load step with at most 4 Newton iterations must fail and be cut back;
+//     the final forces must equal those of a 10-step run (hyperelasticity is
+//     path independent), Newton must converge at a rate > 1.6 in each step,
+//     and the energy-balance residual W_ext - Psi must shrink like dt^2
+//     (ratio > 3 when the step is halved).
+#include "tests.h"
+
+#include <cmath>
+
+using namespace dealii;
+
+namespace
+{
+  std::string
+  column(const std::string &top_bc, const std::string &stepping)
+  {
+    return R"(
+subsection Mesh
+  set Scene = box
+  subsection Box
+    set Upper corner = 1, 1, 2
+    set Subdivisions = 2, 2, 4
+  end
+end
+subsection Body 0
+  set Shear modulus = 1
+  set Bulk modulus  = 3
+end
+subsection Boundary conditions
+  set Boundary ids = 4, 5
+end
+subsection Boundary 4
+  set Constrained components = x, y, z
+end
+subsection Linear solver
+  set Type = direct
+end
+subsection Output
+  set Interval = 0
+end
+)" + top_bc + stepping;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::ofstream out;
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    out.open("output");
+  out << std::setprecision(6);
+
+  // A. Traction.
+  {
+    const auto t = Testing::run_scene(
+      column("subsection Boundary 5\n  set Traction = 0.05*t; 0.02*t; 0.1*t\nend\n",
+             "subsection Load stepping\n  set Time step = 0.5\nend\n"
+             "subsection Newton\n  set Relative tolerance = 1e-12\nend\n"),
+      "traction");
+    const double T[3]  = {0.05, 0.02, 0.1};
+    const char  *xyz[] = {"x", "y", "z"};
+    double       worst = 0;
+    for (unsigned int d = 0; d < 3; ++d)
+      {
+        worst = std::max(worst,
+                         std::abs(t.at(std::string("F5_") + xyz[d]).back() - T[d]));
+        worst = std::max(worst,
+                         std::abs(t.at(std::string("F4_") + xyz[d]).back() + T[d]));
+        out << "mean top displacement " << xyz[d] << " = "
+            << t.at(std::string("u5_") + xyz[d]).back() << std::endl;
+      }
+    out << "top force = T A and base reaction = -T A (1e-8): "
+        << Testing::yes_no(worst < 1e-8 * 0.1) << std::endl;
+  }
+
+  // B. Cut-back, path independence, Newton rate, energy balance.
+  {
+    const std::string top =
+      "subsection Boundary 5\n  set Constrained components = x, y, z\n"
+      "  set Displacement = 0.3*t; 0; -0.5*t\nend\n";
+    const auto stepping = [](const double dt, const unsigned int max_it) {
+      return "subsection Load stepping\n  set Time step = " +
+             std::to_string(dt) +
+             "\n  set Growth factor = 1\nend\nsubsection Newton\n"
+             "  set Relative tolerance = 1e-11\n  set Maximum iterations = " +
+             std::to_string(max_it) + "\nend\n";
+    };
+    const auto one   = Testing::run_scene(column(top, stepping(1., 4)), "one_step");
+    const auto ten   = Testing::run_scene(column(top, stepping(0.1, 15)), "ten_steps");
+    const auto twenty = Testing::run_scene(column(top, stepping(0.05, 15)), "twenty_steps");
+
+    double cutbacks = 0;
+    for (const double c : one.at("cutbacks"))
+      cutbacks += c;
+    out << "single step was cut back: " << Testing::yes_no(cutbacks > 0)
+        << std::endl;
+
+    double worst = 0;
+    for (const std::string c : {"F5_x", "F5_y", "F5_z"})
+      worst = std::max(worst,
+                       Testing::relative_error(one.at(c).back(),
+                                               ten.at(c).back(),
+                                               std::abs(ten.at("F5_z").back())));
+    out << "top force after the load path = " << ten.at("F5_x").back() << ", "
+        << ten.at("F5_z").back() << std::endl;
+    out << "cut-back run ends in the same state (1e-8): "
+        << Testing::yes_no(worst < 1e-8) << std::endl;
+
+    // The rate is undefined (nan) when Newton reaches round-off before three
+    // residuals above it exist (most steps of the 20-step run); it must be
+    // defined in most steps of the 10-step run and > 1.6 wherever defined.
+    bool quadratic = true;
+    for (const auto *table : {&ten, &twenty})
+      for (std::size_t i = 1; i < table->at("newton_rate").size(); ++i)
+        if (std::isfinite(table->at("newton_rate")[i]))
+          quadratic = quadratic && table->at("newton_rate")[i] > 1.6;
+    unsigned int defined = 0;
+    for (const double rate : ten.at("newton_rate"))
+      defined += std::isfinite(rate) ? 1 : 0;
+    out << "Newton rate > 1.6 in every step: "
+        << Testing::yes_no(quadratic && 2 * defined > ten.at("step").size())
+        << std::endl;
+    const double r10 = std::abs(ten.at("energy_residual").back());
+    const double r20 = std::abs(twenty.at("energy_residual").back());
+    out << "stored energy = " << ten.at("stored_energy").back() << std::endl;
+    out << "energy residual shrinks like dt^2 (ratio > 3): "
+        << Testing::yes_no(r10 / r20 > 3.) << std::endl;
+    std::cout << "energy residuals " << r10 << " " << r20 << std::endl;
+  }
+}
