@@ -1,5 +1,5 @@
 // Patch test on distorted elements, read from a Gmsh file: the unit cube as
-// 3x3x3 hexahedra with displaced interior vertices (distorted_patch.msh,
+// 3x3x3 hexahedra with displaced interior vertices (prm/meshes/distorted_cube.msh,
 // material id 7, boundary ids 1..6 from physical tags). Every face gets
 // u = (F - I) X for a general F (non-symmetric, J != 1). Q2 reproduces the
 // homogeneous solution exactly, so the force on each face equals P(F) N A
@@ -34,7 +34,7 @@ main(int argc, char **argv)
 subsection Mesh
   set Scene = gmsh
   subsection Gmsh
-    set File name = )") + SOURCE_DIR + R"(/distorted_patch.msh
+    set File name = )") + SOURCE_DIR + R"(/../prm/meshes/distorted_cube.msh
   end
 end
 subsection Bodies

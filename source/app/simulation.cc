@@ -225,6 +225,15 @@ namespace DuctileContact
     statistics.add("newton_rate", report.convergence_rate);
     statistics.add("linear_iterations", report.linear_iterations);
     statistics.add("cutbacks", cutbacks);
+    // Cumulative wall time of the phases, for work-precision studies.
+    const auto sections = timer.get_summary_data(TimerOutput::total_wall_time);
+    const auto seconds  = [&](const std::string &name) {
+      const auto it = sections.find(name);
+      return it == sections.end() ? 0. : it->second;
+    };
+    statistics.add("assembly_time",
+                   seconds("assembly") + seconds("assembly (line search)"));
+    statistics.add("solve_time", seconds("linear solve"));
     statistics.add("wall_time", MPI_Wtime() - wall_start);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       statistics.write();

@@ -46,7 +46,7 @@ namespace DuctileContact
     prm.add_parameter("Function constants",
                       constants_text,
                       "Constants usable in the expressions above, as "
-                      "'name=value, name=value'.",
+                      "'name=value, name=value' (pi is predefined).",
                       Patterns::Anything());
     prm.leave_subsection();
   }
@@ -58,7 +58,7 @@ namespace DuctileContact
     std::map<std::string, double>
     parse_constants(const std::string &text, const std::string &entry)
     {
-      std::map<std::string, double> constants;
+      std::map<std::string, double> constants{{"pi", numbers::PI}};
       for (const std::string &item : Utilities::split_string_list(text, ','))
         {
           if (item.empty())

@@ -86,6 +86,39 @@ namespace DuctileContact
       return Utilities::MPI::max(largest, comm) > 0.;
     };
 
+    // Records ||R|| of a state whose Dirichlet data are reached and returns
+    // whether it is converged; if so, also the observed order from the last
+    // three residuals above round-off (a residual at the floor of double
+    // precision says nothing about the rate).
+    const auto converged = [&](const double r, const double scale) {
+      report.residual_norms.push_back(r);
+      if (r > parameters.relative_tolerance * scale +
+                parameters.absolute_tolerance * force_scale)
+        return false;
+      report.converged   = true;
+      const double floor = 1e3 * std::numeric_limits<double>::epsilon() * scale;
+      const auto  &h     = report.residual_norms;
+      std::size_t  n     = h.size();
+      while (n >= 3 && h[n - 1] <= floor)
+        --n;
+      if (n >= 3 && h[n - 1] > 0 && h[n - 2] > 0 && h[n - 3] > 0 &&
+          h[n - 2] != h[n - 3])
+        report.convergence_rate =
+          std::log(h[n - 1] / h[n - 2]) / std::log(h[n - 2] / h[n - 3]);
+      return true;
+    };
+
+    const auto print = [&](const unsigned int it,
+                           const double       r,
+                           const double       scale,
+                           const bool         pending) {
+      verbose_out << "      Newton " << std::setw(2) << it
+                  << ": |R| = " << std::scientific << std::setprecision(3)
+                  << r << ", |R|/|f_int| = " << (scale > 0 ? r / scale : 0.)
+                  << (pending ? ", Dirichlet data pending" : "")
+                  << std::defaultfloat << std::endl;
+    };
+
     for (unsigned int it = 0;; ++it)
       {
         u_ghosted = u;
@@ -103,46 +136,18 @@ namespace DuctileContact
         }
         const double r     = residual.l2_norm();
         const double scale = internal_force.l2_norm();
-        if (!pending)
-          report.residual_norms.push_back(r);
-        report.iterations = it;
-
-        verbose_out << "      Newton " << std::setw(2) << it
-                    << ": |R| = " << std::scientific << std::setprecision(3)
-                    << r << ", |R|/|f_int| = " << (scale > 0 ? r / scale : 0.)
-                    << (pending ? ", Dirichlet data pending" : "")
-                    << std::defaultfloat << std::endl;
-
+        report.iterations  = it;
+        if (it == 0)
+          print(it, r, scale, pending);
         if (!std::isfinite(r))
           {
             report.failure = "residual is not finite";
             return report;
           }
-        if (!pending && r <= parameters.relative_tolerance * scale +
-                               parameters.absolute_tolerance * force_scale)
-          {
-            report.converged = true;
-            // Observed order from the last three residuals above round-off
-            // (a last residual at the floor of double precision says nothing
-            // about the rate).
-            const double floor = 1e3 * std::numeric_limits<double>::epsilon() *
-                                 std::max(scale, force_scale * 1e-16);
-            const auto &h = report.residual_norms;
-            std::size_t n = h.size();
-            while (n >= 3 && h[n - 1] <= floor)
-              --n;
-            if (n >= 3 && h[n - 1] > 0 && h[n - 2] > 0 && h[n - 3] > 0 &&
-                h[n - 2] != h[n - 3])
-              report.convergence_rate =
-                std::log(h[n - 1] / h[n - 2]) / std::log(h[n - 2] / h[n - 3]);
-            return report;
-          }
-        if (it == parameters.max_iterations)
-          {
-            report.failure = "no convergence in " +
-                             std::to_string(it) + " Newton iterations";
-            return report;
-          }
+        // From the second iteration on, convergence is decided right after
+        // the line search; only the start of a step is checked here.
+        if (it == 0 && !pending && converged(r, scale))
+          return report;
 
         unsigned int n_linear = 0;
         try
@@ -161,26 +166,33 @@ namespace DuctileContact
         report.linear_iterations += n_linear;
 
         // Backtracking: shorten while an element inverts or, once the
-        // Dirichlet data are reached, while ||R|| does not decrease.
-        double step     = 1.;
-        bool   accepted = false;
+        // Dirichlet data are reached, while ||R|| does not decrease. The
+        // residual of the accepted state also decides convergence, so a
+        // converged step never assembles a tangent it does not use.
+        double       step     = 1.;
+        bool         accepted = false;
+        double       trial_r = 0, trial_scale = 0;
+        AssemblyInfo trial_info;
         for (unsigned int ls = 0; ls <= parameters.max_line_search_steps;
              ++ls, step *= 0.5)
           {
             TrilinosWrappers::MPI::BlockVector trial = u;
             trial.add(step, delta);
             u_ghosted = trial;
-            AssemblyInfo trial_info;
-            double       trial_r = 0;
             {
               TimerOutput::Scope scope(timer, "assembly (line search)");
-              trial_info = assembler.assemble(
-                u_ghosted, t, constraints, {nullptr, nullptr, &residual, nullptr});
-              trial_r = residual.l2_norm();
+              trial_info  = assembler.assemble(u_ghosted,
+                                              t,
+                                              constraints,
+                                              {nullptr,
+                                               nullptr,
+                                               &residual,
+                                               &internal_force});
+              trial_r     = residual.l2_norm();
+              trial_scale = internal_force.l2_norm();
             }
-            const bool decreases =
-              pending || !parameters.line_search ||
-              trial_r <= (1. - 1e-4 * step) * r;
+            const bool decreases = pending || !parameters.line_search ||
+                                   trial_r <= (1. - 1e-4 * step) * r;
             if (!trial_info.inverted && std::isfinite(trial_r) && decreases)
               {
                 u        = trial;
@@ -201,6 +213,21 @@ namespace DuctileContact
                     << (step < 1 ? ", step length " + std::to_string(step) :
                                    std::string())
                     << std::endl;
+
+        const bool still_pending = pending && step < 1.;
+        print(it + 1, trial_r, trial_scale, still_pending);
+        report.iterations = it + 1;
+        if (!still_pending && converged(trial_r, trial_scale))
+          {
+            report.info = trial_info;
+            return report;
+          }
+        if (it + 1 == parameters.max_iterations)
+          {
+            report.failure = "no convergence in " +
+                             std::to_string(it + 1) + " Newton iterations";
+            return report;
+          }
       }
   }
 } // namespace DuctileContact

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""Writes distorted_patch.msh (Gmsh 2.2 ASCII): the unit cube as 3x3x3
+"""Writes distorted_cube.msh (Gmsh 2.2 ASCII): the unit cube as 3x3x3
 hexahedra whose interior vertices are moved by up to 0.1 (a fixed,
 reproducible pattern), physical volume 7 (the body's material id) and
 physical surfaces 1..6 on the faces x-, x+, y-, y+, z-, z+ (boundary ids).
-Used by the patch test distorted_patch.cc."""
+Used by the patch test tests/distorted_patch.cc and the scene prm/gmsh_distorted_cube.prm."""
 
 n = 3
 def index(i, j, k):
@@ -41,7 +41,7 @@ for k in range(n):
             v += [index(i, j, k + 1), index(i + 1, j, k + 1), index(i + 1, j + 1, k + 1), index(i, j + 1, k + 1)]
             elements.append((5, 7, v))
 
-with open("distorted_patch.msh", "w") as f:
+with open("distorted_cube.msh", "w") as f:
     f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
     f.write("$PhysicalNames\n7\n")
     for tag, name in zip(range(1, 7), ["xmin", "xmax", "ymin", "ymax", "zmin", "zmax"]):
