@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Installs the Debian packages ductile-contact needs, skipping those already present.
 # Works as root, or as a normal user through sudo. Usage: scripts/install-deps.sh [--plots]
-#   --plots  also installs python3-matplotlib (only the benchmark plot scripts need it)
+#   --plots  also installs python3-matplotlib and time (for the benchmarks)
 set -euo pipefail
 
 packages=(cmake make g++ libdeal.ii-dev openmpi-bin numdiff libopenblas0-pthread)
 if [[ "${1:-}" == "--plots" ]]; then
-  packages+=(python3-matplotlib)
+  packages+=(python3-matplotlib time)
 fi
 
 missing=()
