@@ -181,8 +181,12 @@ namespace DuctileContact
                                                      dof_indices,
                                                      *targets.residual);
             }
+          // Condensed with the hanging-node constraints only: then the sum
+          // of f_int over the DoFs of a boundary is the force through it
+          // even where the boundary carries hanging nodes.
           if (targets.internal_force)
-            targets.internal_force->add(dof_indices, cell_f_int);
+            discretisation.hanging_node_constraints.distribute_local_to_global(
+              cell_f_int, dof_indices, *targets.internal_force);
         }
 
     if (targets.tangent)

@@ -35,7 +35,8 @@ namespace DuctileContact
     /// R = f_int - f_ext on free DoFs (constrained entries zero): its norm
     /// decides convergence.
     dealii::TrilinosWrappers::MPI::BlockVector *residual = nullptr;
-    /// f_int, not condensed: reactions and external work come from it.
+    /// f_int condensed with the hanging-node constraints only (Dirichlet
+    /// rows kept): reactions and external work come from it.
     dealii::TrilinosWrappers::MPI::BlockVector *internal_force = nullptr;
   };
 
