@@ -143,20 +143,23 @@ namespace DuctileContact
 
 
 
-  std::vector<double>
-  Simulation::boundary_means(const TrilinosWrappers::MPI::BlockVector &u) const
+  std::vector<Simulation::BoundaryIntegrals>
+  Simulation::boundary_integrals(const TrilinosWrappers::MPI::BlockVector &u,
+                                 const double t) const
   {
-    // Area-weighted mean displacement of each boundary with conditions.
-    const unsigned int  n_bc = parameters.boundary_conditions.size();
-    std::vector<double> sums(n_bc * (dim + 1), 0.);
+    const unsigned int n_bc = parameters.boundary_conditions.size();
     std::map<types::boundary_id, unsigned int> index;
     for (unsigned int b = 0; b < n_bc; ++b)
       index[parameters.boundary_conditions[b].boundary_id] = b;
 
+    // Per boundary: int u dA (3), int T dA (3), area.
+    std::vector<double>   sums(n_bc * (2 * dim + 1), 0.);
     hp::FEFaceValues<dim> hp_face_values(discretisation->mapping,
                                          discretisation->fe_collection,
                                          discretisation->face_quadrature,
-                                         update_values | update_JxW_values);
+                                         update_values |
+                                           update_quadrature_points |
+                                           update_JxW_values);
     std::vector<Tensor<1, dim>> values;
     for (const auto &cell : discretisation->dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -166,23 +169,39 @@ namespace DuctileContact
               const auto it = index.find(cell->face(f)->boundary_id());
               if (it == index.end())
                 continue;
+              const BoundaryCondition &bc =
+                parameters.boundary_conditions[it->second];
+              double *sum = &sums[it->second * (2 * dim + 1)];
               hp_face_values.reinit(cell, f);
               const auto &fv = hp_face_values.get_present_fe_values();
               values.resize(fv.n_quadrature_points);
               fv[discretisation->displacement].get_function_values(u, values);
               for (unsigned int q = 0; q < values.size(); ++q)
                 {
+                  const Tensor<1, dim> T =
+                    bc.has_traction ? bc.traction_at(fv.quadrature_point(q), t) :
+                                      Tensor<1, dim>();
                   for (unsigned int d = 0; d < dim; ++d)
-                    sums[it->second * (dim + 1) + d] += values[q][d] * fv.JxW(q);
-                  sums[it->second * (dim + 1) + dim] += fv.JxW(q);
+                    {
+                      sum[d] += values[q][d] * fv.JxW(q);
+                      sum[dim + d] += T[d] * fv.JxW(q);
+                    }
+                  sum[2 * dim] += fv.JxW(q);
                 }
             }
     Utilities::MPI::sum(sums, comm, sums);
-    std::vector<double> means;
+
+    std::vector<BoundaryIntegrals> result(n_bc);
     for (unsigned int b = 0; b < n_bc; ++b)
-      for (unsigned int d = 0; d < dim; ++d)
-        means.push_back(sums[b * (dim + 1) + d] / sums[b * (dim + 1) + dim]);
-    return means;
+      {
+        const double *sum = &sums[b * (2 * dim + 1)];
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            result[b].mean_displacement[d] = sum[d] / sum[2 * dim];
+            result[b].traction_force[d]    = sum[dim + d];
+          }
+      }
+    return result;
   }
 
 
@@ -197,24 +216,30 @@ namespace DuctileContact
     statistics.add("step", step);
     statistics.add("time", t);
     statistics.add("dt", dt);
-    const std::vector<double> means = boundary_means(u_ghosted);
-    const char               *xyz[] = {"x", "y", "z"};
+    const auto  integrals = boundary_integrals(u_ghosted, t);
+    const char *xyz[]     = {"x", "y", "z"};
     for (unsigned int b = 0; b < parameters.boundary_conditions.size(); ++b)
       {
-        const std::string id =
-          Utilities::to_string(parameters.boundary_conditions[b].boundary_id);
+        const BoundaryCondition &bc = parameters.boundary_conditions[b];
+        const std::string id = Utilities::to_string(bc.boundary_id);
         for (unsigned int d = 0; d < dim; ++d)
-          statistics.add("u" + id + "_" + xyz[d], means[b * dim + d]);
-        // Force transmitted through the boundary: the sum of the internal
-        // force vector over its DoFs (reaction on constrained components,
-        // applied traction on the others).
+          statistics.add("u" + id + "_" + xyz[d],
+                         integrals[b].mean_displacement[d]);
+        // Force on the body through this boundary: on a constrained
+        // component the reaction, i.e. the sum of f_int over the DoFs this
+        // boundary constrains; on the others the applied traction int T dA.
+        // (Summing f_int there too would count the reactions of nodes this
+        // boundary shares with a constrained one.)
         for (unsigned int d = 0; d < dim; ++d)
           {
-            double force = 0;
-            for (const auto i : boundary_dofs[b][d])
-              force += internal_force(i);
+            double reaction = 0;
+            if (bc.constrained[d])
+              for (const auto i : boundary_dofs[b][d])
+                reaction += internal_force(i);
             statistics.add("F" + id + "_" + xyz[d],
-                           Utilities::MPI::sum(force, comm));
+                           bc.constrained[d] ?
+                             Utilities::MPI::sum(reaction, comm) :
+                             integrals[b].traction_force[d]);
           }
       }
     const double stored_energy = report.info.stored_energy;

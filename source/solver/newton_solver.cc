@@ -88,25 +88,29 @@ namespace DuctileContact
 
     // Records ||R|| of a state whose Dirichlet data are reached and returns
     // whether it is converged; if so, also the observed order from the last
-    // three residuals above round-off (a residual at the floor of double
-    // precision says nothing about the rate).
-    const auto converged = [&](const double r, const double scale) {
-      report.residual_norms.push_back(r);
-      if (r > parameters.relative_tolerance * scale +
-                parameters.absolute_tolerance * force_scale)
-        return false;
-      report.converged   = true;
-      const double floor = 1e3 * std::numeric_limits<double>::epsilon() * scale;
-      const auto  &h     = report.residual_norms;
-      std::size_t  n     = h.size();
-      while (n >= 3 && h[n - 1] <= floor)
-        --n;
-      if (n >= 3 && h[n - 1] > 0 && h[n - 2] > 0 && h[n - 3] > 0 &&
-          h[n - 2] != h[n - 3])
-        report.convergence_rate =
-          std::log(h[n - 1] / h[n - 2]) / std::log(h[n - 2] / h[n - 3]);
-      return true;
-    };
+    // three residuals above the round-off floor (eps times the size of the
+    // terms summed into f_int, see AssemblyInfo::force_magnitude): a residual
+    // at that floor says nothing about the rate, so the rate stays undefined
+    // (nan) when fewer than three residuals lie above it.
+    const auto converged =
+      [&](const double r, const double scale, const AssemblyInfo &info) {
+        report.residual_norms.push_back(r);
+        if (r > parameters.relative_tolerance * scale +
+                  parameters.absolute_tolerance * force_scale)
+          return false;
+        report.converged = true;
+        const double floor =
+          std::numeric_limits<double>::epsilon() * info.force_magnitude;
+        const auto &h = report.residual_norms;
+        std::size_t n = h.size();
+        while (n >= 3 && h[n - 1] <= floor)
+          --n;
+        if (n >= 3 && h[n - 1] > 0 && h[n - 2] > 0 && h[n - 3] > 0 &&
+            h[n - 2] != h[n - 3])
+          report.convergence_rate =
+            std::log(h[n - 1] / h[n - 2]) / std::log(h[n - 2] / h[n - 3]);
+        return true;
+      };
 
     const auto print = [&](const unsigned int it,
                            const double       r,
@@ -146,7 +150,7 @@ namespace DuctileContact
           }
         // From the second iteration on, convergence is decided right after
         // the line search; only the start of a step is checked here.
-        if (it == 0 && !pending && converged(r, scale))
+        if (it == 0 && !pending && converged(r, scale, report.info))
           return report;
 
         unsigned int n_linear = 0;
@@ -217,7 +221,7 @@ namespace DuctileContact
         const bool still_pending = pending && step < 1.;
         print(it + 1, trial_r, trial_scale, still_pending);
         report.iterations = it + 1;
-        if (!still_pending && converged(trial_r, trial_scale))
+        if (!still_pending && converged(trial_r, trial_scale, trial_info))
           {
             report.info = trial_info;
             return report;

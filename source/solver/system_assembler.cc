@@ -55,7 +55,7 @@ namespace DuctileContact
                                            update_JxW_values);
 
     FullMatrix<double>                   cell_matrix;
-    Vector<double>                       cell_f_int, cell_rhs;
+    Vector<double>                       cell_f_int, cell_rhs, cell_magnitude;
     std::vector<types::global_dof_index> dof_indices;
     std::vector<Tensor<2, dim>>          grad_u;
     std::vector<unsigned int>            u_dofs, u_component;
@@ -77,6 +77,7 @@ namespace DuctileContact
 
           cell_matrix.reinit(n_dofs, n_dofs);
           cell_f_int.reinit(n_dofs);
+          cell_magnitude.reinit(n_dofs);
           cell_rhs.reinit(n_dofs);
           dof_indices.resize(n_dofs);
           cell->get_dof_indices(dof_indices);
@@ -122,7 +123,14 @@ namespace DuctileContact
                 {
                   shape_grad[k]    = fe_values.shape_grad(u_dofs[k], q);
                   const unsigned a = u_component[k];
-                  cell_f_int(u_dofs[k]) += (m.P[a] * shape_grad[k]) * JxW;
+                  const double term = (m.P[a] * shape_grad[k]) * JxW;
+                  cell_f_int(u_dofs[k]) += term;
+                  // F = I + Grad u holds Grad u to eps in absolute terms,
+                  // so P carries errors of eps times the moduli.
+                  cell_magnitude(u_dofs[k]) +=
+                    (std::abs(term) +
+                     (body.shear_modulus + body.bulk_modulus) *
+                       shape_grad[k].norm() * JxW);
                   if (with_tangent)
                     for (unsigned int c = 0; c < dim; ++c)
                       for (unsigned int D = 0; D < dim; ++D)
@@ -139,6 +147,8 @@ namespace DuctileContact
                     cell_matrix(u_dofs[k], u_dofs[l]) +=
                       grad_times_A[k][u_component[l]] * shape_grad[l];
             }
+
+          info.force_magnitude += cell_magnitude.norm_sqr();
 
           // R = f_int - f_ext; the Newton right-hand side is -R.
           for (unsigned int i = 0; i < n_dofs; ++i)
@@ -200,6 +210,8 @@ namespace DuctileContact
     info.inverted       = Utilities::MPI::max(info.inverted ? 1 : 0, comm) > 0;
     info.min_J          = Utilities::MPI::min(info.min_J, comm);
     info.stored_energy  = Utilities::MPI::sum(info.stored_energy, comm);
+    info.force_magnitude =
+      std::sqrt(Utilities::MPI::sum(info.force_magnitude, comm));
     return info;
   }
 } // namespace DuctileContact

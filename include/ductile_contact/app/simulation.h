@@ -28,6 +28,8 @@ namespace DuctileContact
    * mean boundary displacements, stored energy, external work (trapezoidal
    * rule, W += 1/2 (f_n + f_n+1) . (u_n+1 - u_n)) and the energy-balance
    * residual W_ext - int Psi, and writes the statistics table and output.
+   * Reaction forces are sums of f_int (condensed with the hanging-node
+   * constraints) over the DoFs a boundary constrains.
    */
   class Simulation
   {
@@ -42,8 +44,6 @@ namespace DuctileContact
     run();
 
   private:
-    struct BoundaryRecord;
-
     void
     setup();
     void
@@ -52,8 +52,16 @@ namespace DuctileContact
                 const double              dt,
                 const NewtonReport      &report,
                 const unsigned int        cutbacks);
-    std::vector<double>
-    boundary_means(const dealii::TrilinosWrappers::MPI::BlockVector &u) const;
+    /// Area-weighted mean displacement and integrated traction per
+    /// boundary with conditions.
+    struct BoundaryIntegrals
+    {
+      dealii::Tensor<1, dim> mean_displacement;
+      dealii::Tensor<1, dim> traction_force;
+    };
+    std::vector<BoundaryIntegrals>
+    boundary_integrals(const dealii::TrilinosWrappers::MPI::BlockVector &u,
+                       const double t) const;
 
     const RunParameters &parameters;
     const MPI_Comm       comm;

@@ -22,6 +22,12 @@ namespace DuctileContact
     double min_J        = 1.;
     /// int Psi dV over the reference configuration [J].
     double stored_energy = 0.;
+    /// Size of the terms summed into f_int: sqrt of the sum over cells and
+    /// DoFs of (sum over quadrature points of (|P : Grad N_i| + (mu + kappa)
+    /// |Grad N_i|) JxW)^2 [N]. F = I + Grad u resolves Grad u only to eps,
+    /// so P is uncertain by eps (mu + kappa): ||R|| cannot drop much below
+    /// eps times this, whatever the solver does.
+    double force_magnitude = 0.;
   };
 
   /// Where assemble() writes; null members are skipped.
