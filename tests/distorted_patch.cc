@@ -16,10 +16,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out;
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    out.open("output");
-  out << std::setprecision(6);
+  std::ofstream out = Testing::open_output();
 
   // F - I, applied in two load steps.
   const double H[3][3] = {{0.20, 0.10, -0.05}, {0.02, -0.10, 0.08}, {0.05, -0.03, 0.15}};

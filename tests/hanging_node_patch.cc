@@ -19,10 +19,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out;
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    out.open("output");
-  out << std::setprecision(6);
+  std::ofstream out = Testing::open_output();
 
   const double mu = 1., kappa = 4., T = 0.3;
   const auto t = Testing::run_scene(R"(
@@ -71,24 +68,13 @@ end
                                     "hanging");
 
   // Closed form: lateral stretch from tau_yy = 0, axial from P_xx = T.
-  const auto state = [&](const double l, double &lt) {
-    const auto response = [&](const double s) {
-      Tensor<2, dim> F;
-      F[0][0] = l;
-      F[1][1] = F[2][2] = s;
-      return neo_hooke(F, mu, kappa, false);
-    };
-    double lo = 0.3, hi = 1.5;
-    for (unsigned int i = 0; i < 200; ++i)
-      ((response(0.5 * (lo + hi)).tau[1][1] > 0) ? hi : lo) = 0.5 * (lo + hi);
-    lt = 0.5 * (lo + hi);
-    return response(lt);
-  };
   double lo = 1., hi = 2., lt = 1.;
   for (unsigned int i = 0; i < 200; ++i)
-    ((state(0.5 * (lo + hi), lt).P[0][0] > T) ? hi : lo) = 0.5 * (lo + hi);
+    ((Testing::uniaxial_stress_state(0.5 * (lo + hi), mu, kappa, lt).P[0][0] > T) ?
+       hi :
+       lo) = 0.5 * (lo + hi);
   const double           lambda = 0.5 * (lo + hi);
-  const MaterialResponse m      = state(lambda, lt);
+  const MaterialResponse m = Testing::uniaxial_stress_state(lambda, mu, kappa, lt);
 
   const double errors[] = {
     Testing::relative_error(t.at("F1_x").back(), T, T),

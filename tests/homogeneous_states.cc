@@ -91,26 +91,13 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out;
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    out.open("output");
-  out << std::setprecision(6);
+  std::ofstream out = Testing::open_output();
 
   // Uniaxial stretch.
   {
     const double lambda = 1.5;
-    // Lateral stretch from tau_yy(lambda, lt) = 0 by bisection.
-    const auto tau = [&](const double lt) {
-      Tensor<2, dim> F;
-      F[0][0] = lambda;
-      F[1][1] = F[2][2] = lt;
-      return neo_hooke(F, mu, kappa, false);
-    };
-    double lo = 0.3, hi = 1.5;
-    for (unsigned int i = 0; i < 200; ++i)
-      ((tau(0.5 * (lo + hi)).tau[1][1] > 0) ? hi : lo) = 0.5 * (lo + hi);
-    const double           lt = 0.5 * (lo + hi);
-    const MaterialResponse m  = tau(lt);
+    double                 lt = 1.;
+    const MaterialResponse m  = Testing::uniaxial_stress_state(lambda, mu, kappa, lt);
 
     const std::string bcs =
       "subsection Boundary conditions\n  set Boundary ids = 0, 1, 2, 3, 4\nend\n" +

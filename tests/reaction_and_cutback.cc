@@ -52,10 +52,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out;
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    out.open("output");
-  out << std::setprecision(6);
+  std::ofstream out = Testing::open_output();
 
   // A. Traction.
   {

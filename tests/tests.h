@@ -9,6 +9,7 @@
 
 #include <ductile_contact/app/run_parameters.h>
 #include <ductile_contact/app/simulation.h>
+#include <ductile_contact/materials/neo_hooke.h>
 #include <ductile_contact/output/tee_stream.h>
 
 #include <filesystem>
@@ -74,6 +75,43 @@ namespace Testing
     if (code != 0)
       throw std::runtime_error("run in " + directory + " failed");
     return read_statistics(directory + "/statistics");
+  }
+
+  /**
+   * The file 'output' that the harness compares, open on rank 0 only (other
+   * ranks write into a closed stream, i.e. nowhere), 6 significant digits.
+   */
+  inline std::ofstream
+  open_output()
+  {
+    std::ofstream out;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      out.open("output");
+    out << std::setprecision(6);
+    return out;
+  }
+
+  /**
+   * Closed form of homogeneous uniaxial stress: the state F = diag(lambda,
+   * lt, lt) with tau_yy = 0, lt found by bisection.
+   */
+  inline DuctileContact::MaterialResponse
+  uniaxial_stress_state(const double lambda,
+                        const double mu,
+                        const double kappa,
+                        double      &lateral_stretch)
+  {
+    const auto response = [&](const double lt) {
+      dealii::Tensor<2, DuctileContact::dim> F;
+      F[0][0] = lambda;
+      F[1][1] = F[2][2] = lt;
+      return DuctileContact::neo_hooke(F, mu, kappa, false);
+    };
+    double lo = 0.3, hi = 1.5;
+    for (unsigned int i = 0; i < 200; ++i)
+      ((response(0.5 * (lo + hi)).tau[1][1] > 0) ? hi : lo) = 0.5 * (lo + hi);
+    lateral_stretch = 0.5 * (lo + hi);
+    return response(lateral_stretch);
   }
 
   /// Relative difference, guarded for a zero reference.

@@ -25,10 +25,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                   comm = MPI_COMM_WORLD;
-  std::ofstream                    out;
-  if (Utilities::MPI::this_mpi_process(comm) == 0)
-    out.open("output");
-  out << std::setprecision(6);
+  std::ofstream out = Testing::open_output();
 
   MeshParameters mesh;
   mesh.scene = "two bodies";

@@ -27,12 +27,11 @@ namespace DuctileContact
 
 
 
-  SymmetricTensor<4, dim>
-  neo_hooke_spatial_tangent(const Tensor<2, dim> &F,
-                            const double          mu,
-                            const double          kappa)
+  namespace
   {
-    const Kinematics              k   = kinematics(F);
+    SymmetricTensor<4, dim>
+    spatial_tangent(const Kinematics &k, const double mu, const double kappa)
+    {
     const double                  J   = k.J;
     const SymmetricTensor<2, dim> &I  = StandardTensors::I;
     const SymmetricTensor<2, dim> tau_iso = mu * deviator(k.b_bar);
@@ -44,6 +43,17 @@ namespace DuctileContact
       (2. / 3.) * mu * trace(k.b_bar) * StandardTensors::dev_P -
       (2. / 3.) * (outer_product(tau_iso, I) + outer_product(I, tau_iso));
     return c_vol + c_iso;
+    }
+  } // namespace
+
+
+
+  SymmetricTensor<4, dim>
+  neo_hooke_spatial_tangent(const Tensor<2, dim> &F,
+                            const double          mu,
+                            const double          kappa)
+  {
+    return spatial_tangent(kinematics(F), mu, kappa);
   }
 
 
@@ -99,7 +109,7 @@ namespace DuctileContact
     r.P                        = Tensor<2, dim>(r.tau) * transpose(F_inv);
     if (with_tangent)
       r.A = first_elasticity_tensor(F_inv,
-                                    neo_hooke_spatial_tangent(F, mu, kappa),
+                                    spatial_tangent(k, mu, kappa),
                                     r.tau);
     return r;
   }
