@@ -1,13 +1,14 @@
 // Patch test on distorted elements, read from a Gmsh file: the unit cube as
-// 3x3x3 hexahedra with displaced interior vertices (prm/meshes/distorted_cube.msh,
-// material id 7, boundary ids 1..6 from physical tags). Every face gets
-// u = (F - I) X for a general F (non-symmetric, J != 1). Q2 reproduces the
-// homogeneous solution exactly, so the force on each face equals P(F) N A
-// and the stored energy equals Psi(F) V to solver tolerance (1e-8
-// relative); any error in the assembly on distorted cells breaks this.
-#include "tests.h"
-
+// 3x3x3 hexahedra with displaced interior vertices
+// (prm/meshes/distorted_cube.msh, material id 7, boundary ids 1..6 from
+// physical tags). Every face gets u = (F - I) X for a general F (non-symmetric,
+// J != 1). Q2 reproduces the homogeneous solution exactly, so the force on each
+// face equals P(F) N A and the stored energy equals Psi(F) V to solver
+// tolerance (1e-8 relative); any error in the assembly on distorted cells
+// breaks this.
 #include <ductile_contact/materials/neo_hooke.h>
+
+#include "tests.h"
 
 using namespace dealii;
 using namespace DuctileContact;
@@ -16,10 +17,12 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out = Testing::open_output();
+  std::ofstream                    out = Testing::open_output();
 
   // F - I, applied in two load steps.
-  const double H[3][3] = {{0.20, 0.10, -0.05}, {0.02, -0.10, 0.08}, {0.05, -0.03, 0.15}};
+  const double H[3][3] = {{0.20, 0.10, -0.05},
+                          {0.02, -0.10, 0.08},
+                          {0.05, -0.03, 0.15}};
   std::string  u_text;
   for (unsigned int i = 0; i < 3; ++i)
     {
@@ -31,7 +34,8 @@ main(int argc, char **argv)
 subsection Mesh
   set Scene = gmsh
   subsection Gmsh
-    set File name = )") + SOURCE_DIR + R"(/../prm/meshes/distorted_cube.msh
+    set File name = )") +
+                    SOURCE_DIR + R"(/../prm/meshes/distorted_cube.msh
   end
 end
 subsection Bodies
@@ -72,8 +76,8 @@ end
   const MaterialResponse m = neo_hooke(F, 1., 3., false);
 
   // Outward unit normals of the faces with ids 1..6.
-  const int normal[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0},
-                            {0, 1, 0},  {0, 0, -1}, {0, 0, 1}};
+  const int normal[6][3] = {
+    {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
   const char *xyz[3] = {"x", "y", "z"};
   double      worst  = 0;
   for (unsigned int id = 1; id <= 6; ++id)

@@ -8,9 +8,9 @@
 // bisection): the force through x+ and the reaction on x- (+-T A), both
 // stretches and the stored energy Psi V, to 1e-8 relative.
 // Identical on 1 and 2 MPI ranks.
-#include "tests.h"
-
 #include <ductile_contact/materials/neo_hooke.h>
+
+#include "tests.h"
 
 using namespace dealii;
 using namespace DuctileContact;
@@ -19,10 +19,10 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out = Testing::open_output();
+  std::ofstream                    out = Testing::open_output();
 
   const double mu = 1., kappa = 4., T = 0.3;
-  const auto t = Testing::run_scene(R"(
+  const auto   t = Testing::run_scene(R"(
 subsection Mesh
   set Scene = box
   set Local refinement boxes = 0.5, 0, 0 : 1, 0.5, 0.5 : 2
@@ -70,11 +70,13 @@ end
   // Closed form: lateral stretch from tau_yy = 0, axial from P_xx = T.
   double lo = 1., hi = 2., lt = 1.;
   for (unsigned int i = 0; i < 200; ++i)
-    ((Testing::uniaxial_stress_state(0.5 * (lo + hi), mu, kappa, lt).P[0][0] > T) ?
-       hi :
-       lo) = 0.5 * (lo + hi);
+    ((Testing::uniaxial_stress_state(0.5 * (lo + hi), mu, kappa, lt).P[0][0] >
+      T)
+       ? hi
+       : lo) = 0.5 * (lo + hi);
   const double           lambda = 0.5 * (lo + hi);
-  const MaterialResponse m = Testing::uniaxial_stress_state(lambda, mu, kappa, lt);
+  const MaterialResponse m =
+    Testing::uniaxial_stress_state(lambda, mu, kappa, lt);
 
   const double errors[] = {
     Testing::relative_error(t.at("F1_x").back(), T, T),
@@ -87,8 +89,8 @@ end
       << ", stored energy / mu = " << t.at("stored_energy").back() << std::endl;
   out << "closed form: " << lambda << ", " << lt << ", " << m.psi << std::endl;
   out << "homogeneous uniaxial state with hanging nodes (1e-8): "
-      << Testing::yes_no(*std::max_element(std::begin(errors), std::end(errors)) <
-                         1e-8)
+      << Testing::yes_no(
+           *std::max_element(std::begin(errors), std::end(errors)) < 1e-8)
       << std::endl;
   std::cout << "errors:";
   for (const double e : errors)

@@ -9,11 +9,11 @@
 //  - volumetric expansion lambda = 1.2: P_xx from the reaction on x+;
 // and the stored energy Psi(F) V in each case. Agreement to 1e-8 relative.
 // Run on 1 and 2 MPI ranks with identical output.
-#include "tests.h"
-
 #include <deal.II/base/tensor.h>
 
 #include <ductile_contact/materials/neo_hooke.h>
+
+#include "tests.h"
 
 using namespace dealii;
 using namespace DuctileContact;
@@ -44,7 +44,8 @@ subsection Newton
   set Relative tolerance = 1e-12
 end
 subsection Linear solver
-  set Type = )" + solver + R"(
+  set Type = )" +
+           solver + R"(
   set Relative tolerance = 1e-12
 end
 subsection Output
@@ -66,8 +67,8 @@ end
   std::string
   all_faces(const std::string &displacement)
   {
-    std::string text =
-      "subsection Boundary conditions\n  set Boundary ids = 0, 1, 2, 3, 4, 5\nend\n";
+    std::string text = "subsection Boundary conditions\n  set Boundary ids = "
+                       "0, 1, 2, 3, 4, 5\nend\n";
     for (unsigned int id = 0; id < 6; ++id)
       text += boundary(id, "x, y, z", displacement);
     return text;
@@ -82,8 +83,8 @@ end
   {
     const bool ok = Testing::relative_error(value, exact, mu) < 1e-8;
     all_ok        = all_ok && ok;
-    out << "  " << name << " = " << value << " (closed form " << exact
-        << ")" << std::endl;
+    out << "  " << name << " = " << value << " (closed form " << exact << ")"
+        << std::endl;
   }
 } // namespace
 
@@ -91,16 +92,18 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out = Testing::open_output();
+  std::ofstream                    out = Testing::open_output();
 
   // Uniaxial stretch.
   {
-    const double lambda = 1.5;
-    double                 lt = 1.;
-    const MaterialResponse m  = Testing::uniaxial_stress_state(lambda, mu, kappa, lt);
+    const double           lambda = 1.5;
+    double                 lt     = 1.;
+    const MaterialResponse m =
+      Testing::uniaxial_stress_state(lambda, mu, kappa, lt);
 
     const std::string bcs =
-      "subsection Boundary conditions\n  set Boundary ids = 0, 1, 2, 3, 4\nend\n" +
+      "subsection Boundary conditions\n  set Boundary ids = 0, 1, 2, 3, "
+      "4\nend\n" +
       boundary(0, "x", "0; 0; 0") + boundary(1, "x", "0.5*t; 0; 0") +
       boundary(2, "y", "0; 0; 0") + boundary(3, "", "0; 0; 0") +
       boundary(4, "z", "0; 0; 0");
@@ -115,13 +118,13 @@ main(int argc, char **argv)
 
   // Simple shear.
   {
-    const double   gamma = 0.5;
-    Tensor<2, dim> F     = unit_symmetric_tensor<dim>();
-    F[0][1]              = gamma;
+    const double   gamma     = 0.5;
+    Tensor<2, dim> F         = unit_symmetric_tensor<dim>();
+    F[0][1]                  = gamma;
     const MaterialResponse m = neo_hooke(F, mu, kappa, false);
-    const auto t  = Testing::run_scene(cube_prm(all_faces("0.5*t*y; 0; 0"),
-                                               "direct"),
-                                      "simple_shear");
+    const auto             t =
+      Testing::run_scene(cube_prm(all_faces("0.5*t*y; 0; 0"), "direct"),
+                         "simple_shear");
     bool ok = true;
     out << "simple shear gamma = 0.5:" << std::endl;
     report(out, "P_xy / mu", t.at("F3_x").back(), m.P[0][1], ok);
@@ -136,8 +139,7 @@ main(int argc, char **argv)
     const MaterialResponse m =
       neo_hooke(lambda * unit_symmetric_tensor<dim>(), mu, kappa, false);
     const auto t = Testing::run_scene(
-      cube_prm(all_faces("0.2*t*x; 0.2*t*y; 0.2*t*z"), "direct"),
-      "volumetric");
+      cube_prm(all_faces("0.2*t*x; 0.2*t*y; 0.2*t*z"), "direct"), "volumetric");
     bool ok = true;
     out << "volumetric expansion lambda = 1.2:" << std::endl;
     report(out, "P_xx / mu", t.at("F1_x").back(), m.P[0][0], ok);

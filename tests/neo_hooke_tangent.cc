@@ -27,15 +27,16 @@ main()
     Tensor<2, dim> F;
     for (unsigned int i = 0; i < dim; ++i)
       F[i][i] = l[i];
-    const double J  = l[0] * l[1] * l[2];
-    const double tr = (l[0] * l[0] + l[1] * l[1] + l[2] * l[2]) *
-                      std::pow(J, -2. / 3.);
+    const double J = l[0] * l[1] * l[2];
+    const double tr =
+      (l[0] * l[0] + l[1] * l[1] + l[2] * l[2]) * std::pow(J, -2. / 3.);
     const MaterialResponse r     = neo_hooke(F, mu, kappa, false);
     double                 error = 0;
     for (unsigned int i = 0; i < dim; ++i)
       {
-        const double exact = kappa * (J * J - J) +
-                             mu * (l[i] * l[i] * std::pow(J, -2. / 3.) - tr / 3.);
+        const double exact =
+          kappa * (J * J - J) +
+          mu * (l[i] * l[i] * std::pow(J, -2. / 3.) - tr / 3.);
         error = std::max(error, std::abs(r.tau[i][i] - exact));
         out << "tau_" << i << i << " / mu = " << r.tau[i][i] / mu << std::endl;
       }
@@ -60,8 +61,8 @@ main()
             F[i][j] += dist(gen);
         if (determinant(F) < 0.3)
           continue;
-        const MaterialResponse r = neo_hooke(F, mu, kappa, true);
-        const double           h = 1e-6;
+        const MaterialResponse r    = neo_hooke(F, mu, kappa, true);
+        const double           h    = 1e-6;
         double                 diff = 0, norm = 0;
         for (unsigned int c = 0; c < dim; ++c)
           for (unsigned int D = 0; D < dim; ++D)
@@ -96,8 +97,9 @@ main()
         for (unsigned int c = 0; c < dim; ++c)
           for (unsigned int d = 0; d < dim; ++d)
             {
-              const double exact = lambda * (a == b) * (c == d) +
-                                   mu * ((a == c) * (b == d) + (a == d) * (b == c));
+              const double exact =
+                lambda * (a == b) * (c == d) +
+                mu * ((a == c) * (b == d) + (a == d) * (b == c));
               error = std::max(error, std::abs(r.A[a][b][c][d] - exact));
             }
     out << "A(F = I) is the small-strain elasticity tensor: "

@@ -44,7 +44,8 @@ end
 subsection Output
   set Interval = 0
 end
-)" + top_bc + stepping;
+)" + top_bc +
+           stepping;
   }
 } // namespace
 
@@ -52,24 +53,27 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream out = Testing::open_output();
+  std::ofstream                    out = Testing::open_output();
 
   // A. Traction.
   {
     const auto t = Testing::run_scene(
-      column("subsection Boundary 5\n  set Traction = 0.05*t; 0.02*t; 0.1*t\nend\n",
-             "subsection Load stepping\n  set Time step = 0.5\nend\n"
-             "subsection Newton\n  set Relative tolerance = 1e-12\nend\n"),
+      column(
+        "subsection Boundary 5\n  set Traction = 0.05*t; 0.02*t; 0.1*t\nend\n",
+        "subsection Load stepping\n  set Time step = 0.5\nend\n"
+        "subsection Newton\n  set Relative tolerance = 1e-12\nend\n"),
       "traction");
     const double T[3]  = {0.05, 0.02, 0.1};
     const char  *xyz[] = {"x", "y", "z"};
     double       worst = 0;
     for (unsigned int d = 0; d < 3; ++d)
       {
-        worst = std::max(worst,
-                         std::abs(t.at(std::string("F5_") + xyz[d]).back() - T[d]));
-        worst = std::max(worst,
-                         std::abs(t.at(std::string("F4_") + xyz[d]).back() + T[d]));
+        worst =
+          std::max(worst,
+                   std::abs(t.at(std::string("F5_") + xyz[d]).back() - T[d]));
+        worst =
+          std::max(worst,
+                   std::abs(t.at(std::string("F4_") + xyz[d]).back() + T[d]));
         out << "mean top displacement " << xyz[d] << " = "
             << t.at(std::string("u5_") + xyz[d]).back() << std::endl;
       }
@@ -89,9 +93,12 @@ main(int argc, char **argv)
              "  set Relative tolerance = 1e-11\n  set Maximum iterations = " +
              std::to_string(max_it) + "\nend\n";
     };
-    const auto one   = Testing::run_scene(column(top, stepping(1., 4)), "one_step");
-    const auto ten   = Testing::run_scene(column(top, stepping(0.1, 15)), "ten_steps");
-    const auto twenty = Testing::run_scene(column(top, stepping(0.05, 15)), "twenty_steps");
+    const auto one =
+      Testing::run_scene(column(top, stepping(1., 4)), "one_step");
+    const auto ten =
+      Testing::run_scene(column(top, stepping(0.1, 15)), "ten_steps");
+    const auto twenty =
+      Testing::run_scene(column(top, stepping(0.05, 15)), "twenty_steps");
 
     double cutbacks = 0;
     for (const double c : one.at("cutbacks"))
@@ -101,10 +108,11 @@ main(int argc, char **argv)
 
     double worst = 0;
     for (const std::string c : {"F5_x", "F5_y", "F5_z"})
-      worst = std::max(worst,
-                       Testing::relative_error(one.at(c).back(),
-                                               ten.at(c).back(),
-                                               std::abs(ten.at("F5_z").back())));
+      worst =
+        std::max(worst,
+                 Testing::relative_error(one.at(c).back(),
+                                         ten.at(c).back(),
+                                         std::abs(ten.at("F5_z").back())));
     out << "top force after the load path = " << ten.at("F5_x").back() << ", "
         << ten.at("F5_z").back() << std::endl;
     out << "cut-back run ends in the same state (1e-8): "

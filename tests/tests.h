@@ -58,16 +58,16 @@ namespace Testing
   inline Table
   run_scene(const std::string &prm, const std::string &directory)
   {
-    const MPI_Comm comm = MPI_COMM_WORLD;
+    const MPI_Comm                comm = MPI_COMM_WORLD;
     DuctileContact::RunParameters parameters;
-    parameters.parse_string(prm + "\nsubsection Output\n  set Directory = " +
-                            directory + "\nend\n");
+    parameters.parse_string(
+      prm + "\nsubsection Output\n  set Directory = " + directory + "\nend\n");
     if (dealii::Utilities::MPI::this_mpi_process(comm) == 0)
       std::filesystem::create_directories(directory);
     MPI_Barrier(comm);
     int code = 0;
     {
-      DuctileContact::TeeStream    log(std::cout);
+      DuctileContact::TeeStream  log(std::cout);
       DuctileContact::Simulation simulation(parameters, comm, log);
       code = simulation.run();
     }

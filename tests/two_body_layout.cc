@@ -25,7 +25,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                   comm = MPI_COMM_WORLD;
-  std::ofstream out = Testing::open_output();
+  std::ofstream                    out  = Testing::open_output();
 
   MeshParameters mesh;
   mesh.scene = "two bodies";
@@ -73,17 +73,16 @@ main(int argc, char **argv)
       << std::endl;
 
   // Layout: alpha and s on the plate (material 0) only.
-  Discretisation d(tria,
-                   2,
-                   {{0, BodyFields{true, true}}, {1, BodyFields{false, false}}});
+  Discretisation d(
+    tria, 2, {{0, BodyFields{true, true}}, {1, BodyFields{false, false}}});
   d.setup();
   const types::global_dof_index plate_nodes = 39 * 27 * 5;
   const types::global_dof_index block_nodes = 11 * 11 * 11;
   out << "DoFs u, alpha, s: " << d.dofs_per_block[0] << ", "
       << d.dofs_per_block[1] << ", " << d.dofs_per_block[2] << std::endl;
-  const bool counts_ok = d.dofs_per_block[0] == 3 * (plate_nodes + block_nodes) &&
-                         d.dofs_per_block[1] == plate_nodes &&
-                         d.dofs_per_block[2] == plate_nodes;
+  const bool counts_ok =
+    d.dofs_per_block[0] == 3 * (plate_nodes + block_nodes) &&
+    d.dofs_per_block[1] == plate_nodes && d.dofs_per_block[2] == plate_nodes;
   bool fe_ok = true;
   for (const auto &cell : d.dof_handler.active_cell_iterators())
     if (cell->is_locally_owned())

@@ -67,9 +67,9 @@ namespace DuctileContact
 
 
   void
-  build_and_check_mesh(const RunParameters                        &parameters,
+  build_and_check_mesh(const RunParameters                       &parameters,
                        parallel::distributed::Triangulation<dim> &tria,
-                       const bool                                  refine)
+                       const bool                                 refine)
   {
     MeshParameters mesh = parameters.mesh;
     if (!refine)
@@ -109,9 +109,9 @@ namespace DuctileContact
   int
   run_application(int argc, char **argv, const MPI_Comm comm)
   {
-    const bool   root = Utilities::MPI::this_mpi_process(comm) == 0;
-    bool         validate = false, print_parameters = false;
-    std::string  file_name;
+    const bool  root     = Utilities::MPI::this_mpi_process(comm) == 0;
+    bool        validate = false, print_parameters = false;
+    std::string file_name;
     for (int i = 1; i < argc; ++i)
       {
         const std::string arg = argv[i];
@@ -137,7 +137,8 @@ namespace DuctileContact
           {
             if (root)
               std::cerr << "Error: more than one input file given ('"
-                        << file_name << "', '" << arg << "')\n" << usage;
+                        << file_name << "', '" << arg << "')\n"
+                        << usage;
             return 1;
           }
       }
@@ -163,8 +164,8 @@ namespace DuctileContact
     catch (const InputError &e)
       {
         if (root)
-          std::cerr << "Error in input file '" << file_name
-                    << "': " << e.what() << std::endl;
+          std::cerr << "Error in input file '" << file_name << "': " << e.what()
+                    << std::endl;
         return 1;
       }
     catch (const ExceptionBase &e)
@@ -174,8 +175,8 @@ namespace DuctileContact
         std::ostringstream info;
         e.print_info(info);
         if (root)
-          std::cerr << "Error in input file '" << file_name << "': "
-                    << one_line(info.str()) << std::endl;
+          std::cerr << "Error in input file '" << file_name
+                    << "': " << one_line(info.str()) << std::endl;
         return 1;
       }
 
@@ -224,8 +225,8 @@ namespace DuctileContact
       }
     if (root)
       log << "ductile-contact: " << file_name << " on "
-          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s), results in "
-          << dir << "/" << std::endl;
+          << Utilities::MPI::n_mpi_processes(comm)
+          << " MPI rank(s), results in " << dir << "/" << std::endl;
 
     Simulation simulation(parameters, comm, log);
     return simulation.run();

@@ -41,8 +41,7 @@ namespace DuctileContact
 
 
     void
-    check_unique(const std::vector<unsigned int> &ids,
-                 const std::string               &entry)
+    check_unique(const std::vector<unsigned int> &ids, const std::string &entry)
     {
       const std::set<unsigned int> unique(ids.begin(), ids.end());
       std::ostringstream           text;
@@ -133,8 +132,7 @@ namespace DuctileContact
       }
     std::ifstream in(file_name);
     if (!in)
-      throw InputError("the input file '" + file_name +
-                       "' cannot be opened");
+      throw InputError("the input file '" + file_name + "' cannot be opened");
     std::stringstream text;
     text << in.rdbuf();
     parse_string(text.str());

@@ -21,16 +21,16 @@ namespace DuctileContact
   Simulation::Simulation(const RunParameters &parameters,
                          const MPI_Comm       comm,
                          TeeStream           &log)
-    : parameters(parameters)
-    , comm(comm)
-    , log(log)
-    , pcout(log, Utilities::MPI::this_mpi_process(comm) == 0)
-    , verbose_out(log,
-                  Utilities::MPI::this_mpi_process(comm) == 0 &&
-                    parameters.output.verbosity >= 2)
-    , timer(comm, pcout, TimerOutput::summary, TimerOutput::wall_times)
-    , triangulation(comm)
-    , statistics(parameters.output.directory + "/statistics")
+      : parameters(parameters)
+      , comm(comm)
+      , log(log)
+      , pcout(log, Utilities::MPI::this_mpi_process(comm) == 0)
+      , verbose_out(log,
+                    Utilities::MPI::this_mpi_process(comm) == 0 &&
+                      parameters.output.verbosity >= 2)
+      , timer(comm, pcout, TimerOutput::summary, TimerOutput::wall_times)
+      , triangulation(comm)
+      , statistics(parameters.output.directory + "/statistics")
   {
     for (const BodyParameters &b : parameters.bodies)
       bodies[b.material_id] = &b;
@@ -80,8 +80,10 @@ namespace DuctileContact
       mu_max = std::max(mu_max, b.shear_modulus);
     const double force_scale = mu_max * lo.distance_square(hi);
 
-    assembler = std::make_unique<SystemAssembler>(
-      *discretisation, bodies, parameters.boundary_conditions);
+    assembler =
+      std::make_unique<SystemAssembler>(*discretisation,
+                                        bodies,
+                                        parameters.boundary_conditions);
     linear_solver =
       std::make_unique<LinearSolver>(parameters.linear_solver, *discretisation);
     {
@@ -119,21 +121,22 @@ namespace DuctileContact
               DoFTools::extract_boundary_dofs(discretisation->dof_handler,
                                               ComponentMask(mask),
                                               {bc.boundary_id});
-            per_component[c] = per_component[c] & discretisation->locally_owned_dofs;
+            per_component[c] =
+              per_component[c] & discretisation->locally_owned_dofs;
           }
         boundary_dofs.push_back(per_component);
       }
 
-    const auto &n = discretisation->dofs_per_block;
+    const auto        &n = discretisation->dofs_per_block;
     std::ostringstream body_list;
     for (const BodyParameters &b : parameters.bodies)
-      body_list << (b.material_id == parameters.bodies.front().material_id ?
-                      "" :
-                      ", ")
+      body_list << (b.material_id == parameters.bodies.front().material_id
+                      ? ""
+                      : ", ")
                 << b.name << " (id " << static_cast<unsigned>(b.material_id)
                 << ")";
-    pcout << "Mesh: " << triangulation.n_global_active_cells()
-          << " cells on " << Utilities::MPI::n_mpi_processes(comm)
+    pcout << "Mesh: " << triangulation.n_global_active_cells() << " cells on "
+          << Utilities::MPI::n_mpi_processes(comm)
           << " MPI rank(s); bodies: " << body_list.str() << std::endl
           << "DoFs: " << discretisation->dof_handler.n_dofs() << " (u "
           << n[Block::displacement] << ", alpha " << n[Block::hardening]
@@ -153,8 +156,8 @@ namespace DuctileContact
       index[parameters.boundary_conditions[b].boundary_id] = b;
 
     // Per boundary: int u dA (3), int T dA (3), area.
-    std::vector<double>   sums(n_bc * (2 * dim + 1), 0.);
-    hp::FEFaceValues<dim> hp_face_values(discretisation->mapping,
+    std::vector<double>         sums(n_bc * (2 * dim + 1), 0.);
+    hp::FEFaceValues<dim>       hp_face_values(discretisation->mapping,
                                          discretisation->fe_collection,
                                          discretisation->face_quadrature,
                                          update_values |
@@ -179,8 +182,8 @@ namespace DuctileContact
               for (unsigned int q = 0; q < values.size(); ++q)
                 {
                   const Tensor<1, dim> T =
-                    bc.has_traction ? bc.traction_at(fv.quadrature_point(q), t) :
-                                      Tensor<1, dim>();
+                    bc.has_traction ? bc.traction_at(fv.quadrature_point(q), t)
+                                    : Tensor<1, dim>();
                   for (unsigned int d = 0; d < dim; ++d)
                     {
                       sum[d] += values[q][d] * fv.JxW(q);
@@ -221,7 +224,7 @@ namespace DuctileContact
     for (unsigned int b = 0; b < parameters.boundary_conditions.size(); ++b)
       {
         const BoundaryCondition &bc = parameters.boundary_conditions[b];
-        const std::string id = Utilities::to_string(bc.boundary_id);
+        const std::string        id = Utilities::to_string(bc.boundary_id);
         for (unsigned int d = 0; d < dim; ++d)
           statistics.add("u" + id + "_" + xyz[d],
                          integrals[b].mean_displacement[d]);
@@ -237,9 +240,9 @@ namespace DuctileContact
               for (const auto i : boundary_dofs[b][d])
                 reaction += internal_force(i);
             statistics.add("F" + id + "_" + xyz[d],
-                           bc.constrained[d] ?
-                             Utilities::MPI::sum(reaction, comm) :
-                             integrals[b].traction_force[d]);
+                           bc.constrained[d]
+                             ? Utilities::MPI::sum(reaction, comm)
+                             : integrals[b].traction_force[d]);
           }
       }
     const double stored_energy = report.info.stored_energy;
@@ -272,10 +275,11 @@ namespace DuctileContact
     wall_start = MPI_Wtime();
     setup();
 
-    const auto  &ls       = parameters.load_stepping;
-    const double T        = ls.end_time;
-    const double eps      = 1e-12 * T;
-    const auto   n_steps  = static_cast<unsigned int>(std::ceil(T / ls.time_step - 1e-9));
+    const auto  &ls  = parameters.load_stepping;
+    const double T   = ls.end_time;
+    const double eps = 1e-12 * T;
+    const auto   n_steps =
+      static_cast<unsigned int>(std::ceil(T / ls.time_step - 1e-9));
     double       t        = 0;
     double       dt       = ls.time_step;
     unsigned int step     = 0;
@@ -290,13 +294,14 @@ namespace DuctileContact
     unsigned int cutbacks = 0;
     while (t < T - eps)
       {
-        const double                       dt_try = std::min(dt, T - t);
-        const TrilinosWrappers::MPI::BlockVector u_old = u;
-        const NewtonReport report = newton->solve(t + dt_try, u, internal_force);
+        const double                             dt_try = std::min(dt, T - t);
+        const TrilinosWrappers::MPI::BlockVector u_old  = u;
+        const NewtonReport                       report =
+          newton->solve(t + dt_try, u, internal_force);
 
         if (!report.converged)
           {
-            u = u_old;
+            u  = u_old;
             dt = 0.5 * dt_try;
             ++cutbacks;
             pcout << "  step at t = " << t + dt_try << " failed ("
@@ -320,7 +325,8 @@ namespace DuctileContact
         {
           TrilinosWrappers::MPI::BlockVector du = u;
           du -= u_old;
-          external_work += 0.5 * (internal_force * du + previous_internal_force * du);
+          external_work +=
+            0.5 * (internal_force * du + previous_internal_force * du);
         }
         previous_internal_force = internal_force;
         u_ghosted               = u;
@@ -334,8 +340,8 @@ namespace DuctileContact
 
         const double elapsed = MPI_Wtime() - wall_start;
         pcout << "step " << std::setw(4) << step << " (~" << step << "/"
-              << std::max(n_steps, step) << ")  t = " << std::setw(10) << std::left
-              << t << std::right << " Newton " << std::setw(2)
+              << std::max(n_steps, step) << ")  t = " << std::setw(10)
+              << std::left << t << std::right << " Newton " << std::setw(2)
               << report.iterations << " (linear " << report.linear_iterations
               << ")";
         if (std::isfinite(report.convergence_rate))

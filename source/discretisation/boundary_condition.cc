@@ -76,8 +76,7 @@ namespace DuctileContact
             {
               throw InputError(entry,
                                text,
-                               "the value of '" + kv[0] +
-                                 "' must be a number");
+                               "the value of '" + kv[0] + "' must be a number");
             }
         }
       return constants;

@@ -13,30 +13,26 @@ namespace DuctileContact
 
   Discretisation::Discretisation(
     const parallel::distributed::Triangulation<dim> &tria,
-    const unsigned int                                degree,
-    const std::map<types::material_id, BodyFields>   &bodies)
-    : triangulation(tria)
-    , degree(degree)
-    , bodies(bodies)
-    , dof_handler(tria)
+    const unsigned int                               degree,
+    const std::map<types::material_id, BodyFields>  &bodies)
+      : triangulation(tria)
+      , degree(degree)
+      , bodies(bodies)
+      , dof_handler(tria)
   {
     // Four elements, indexed by fe_index(): (alpha?, s?) in {0,1}^2.
     for (unsigned int index = 0; index < 4; ++index)
       {
         const bool with_alpha = index & 1;
         const bool with_s     = index & 2;
-        const auto scalar     = [&](const bool present)
-          -> std::unique_ptr<FiniteElement<dim>> {
+        const auto scalar =
+          [&](const bool present) -> std::unique_ptr<FiniteElement<dim>> {
           if (present)
             return std::make_unique<FE_Q<dim>>(degree);
           return std::make_unique<FE_Nothing<dim>>();
         };
-        fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree),
-                                              dim,
-                                              *scalar(with_alpha),
-                                              1,
-                                              *scalar(with_s),
-                                              1));
+        fe_collection.push_back(FESystem<dim>(
+          FE_Q<dim>(degree), dim, *scalar(with_alpha), 1, *scalar(with_s), 1));
         quadrature.push_back(QGauss<dim>(degree + 1));
         face_quadrature.push_back(QGauss<dim - 1>(degree + 1));
       }
@@ -58,8 +54,7 @@ namespace DuctileContact
   {
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        cell->set_active_fe_index(
-          fe_index(bodies.at(cell->material_id())));
+        cell->set_active_fe_index(fe_index(bodies.at(cell->material_id())));
     dof_handler.distribute_dofs(fe_collection);
 
     const std::vector<unsigned int> block_component{Block::displacement,
@@ -72,8 +67,7 @@ namespace DuctileContact
       DoFTools::count_dofs_per_fe_block(dof_handler, block_component);
 
     locally_owned_dofs = dof_handler.locally_owned_dofs();
-    DoFTools::extract_locally_relevant_dofs(dof_handler,
-                                            locally_relevant_dofs);
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
     owned_partitioning.clear();
     relevant_partitioning.clear();
     types::global_dof_index offset = 0;

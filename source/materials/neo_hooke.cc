@@ -32,17 +32,17 @@ namespace DuctileContact
     SymmetricTensor<4, dim>
     spatial_tangent(const Kinematics &k, const double mu, const double kappa)
     {
-    const double                  J   = k.J;
-    const SymmetricTensor<2, dim> &I  = StandardTensors::I;
-    const SymmetricTensor<2, dim> tau_iso = mu * deviator(k.b_bar);
+      const double                   J       = k.J;
+      const SymmetricTensor<2, dim> &I       = StandardTensors::I;
+      const SymmetricTensor<2, dim>  tau_iso = mu * deviator(k.b_bar);
 
-    const SymmetricTensor<4, dim> c_vol =
-      kappa * (2. * J * J - J) * StandardTensors::IxI -
-      2. * kappa * (J * J - J) * StandardTensors::S;
-    const SymmetricTensor<4, dim> c_iso =
-      (2. / 3.) * mu * trace(k.b_bar) * StandardTensors::dev_P -
-      (2. / 3.) * (outer_product(tau_iso, I) + outer_product(I, tau_iso));
-    return c_vol + c_iso;
+      const SymmetricTensor<4, dim> c_vol =
+        kappa * (2. * J * J - J) * StandardTensors::IxI -
+        2. * kappa * (J * J - J) * StandardTensors::S;
+      const SymmetricTensor<4, dim> c_iso =
+        (2. / 3.) * mu * trace(k.b_bar) * StandardTensors::dev_P -
+        (2. / 3.) * (outer_product(tau_iso, I) + outer_product(I, tau_iso));
+      return c_vol + c_iso;
     }
   } // namespace
 
@@ -72,8 +72,8 @@ namespace DuctileContact
             {
               double sum = 0;
               for (unsigned int d = 0; d < dim; ++d)
-                sum += (c[a][b][cc][d] + (a == cc ? tau[b][d] : 0.)) *
-                       F_inv[D][d];
+                sum +=
+                  (c[a][b][cc][d] + (a == cc ? tau[b][d] : 0.)) * F_inv[D][d];
               tmp[a][b][cc][D] = sum;
             }
     Tensor<4, dim> A;
@@ -100,17 +100,16 @@ namespace DuctileContact
   {
     const Kinematics k = kinematics(F);
     MaterialResponse r;
-    r.J   = k.J;
-    r.psi = 0.5 * kappa * (k.J - 1.) * (k.J - 1.) +
-            0.5 * mu * (trace(k.b_bar) - 3.);
-    r.tau = kappa * (k.J * k.J - k.J) * StandardTensors::I +
-            mu * deviator(k.b_bar);
+    r.J = k.J;
+    r.psi =
+      0.5 * kappa * (k.J - 1.) * (k.J - 1.) + 0.5 * mu * (trace(k.b_bar) - 3.);
+    r.tau =
+      kappa * (k.J * k.J - k.J) * StandardTensors::I + mu * deviator(k.b_bar);
     const Tensor<2, dim> F_inv = invert(F);
     r.P                        = Tensor<2, dim>(r.tau) * transpose(F_inv);
     if (with_tangent)
-      r.A = first_elasticity_tensor(F_inv,
-                                    spatial_tangent(k, mu, kappa),
-                                    r.tau);
+      r.A =
+        first_elasticity_tensor(F_inv, spatial_tangent(k, mu, kappa), r.tau);
     return r;
   }
 } // namespace DuctileContact

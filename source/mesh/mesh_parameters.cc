@@ -137,15 +137,16 @@ namespace DuctileContact
                     box_text,
                     "each box must read 'x0,y0,z0 : x1,y1,z1 : n'");
         RefinementBox b;
-        b.lower = parse_point(parts[0], boxes_entry);
-        b.upper = parse_point(parts[1], boxes_entry);
+        b.lower    = parse_point(parts[0], boxes_entry);
+        b.upper    = parse_point(parts[1], boxes_entry);
         int levels = -1;
         try
           {
             levels = Utilities::string_to_int(parts[2]);
           }
         catch (...)
-          {}
+          {
+          }
         check_input(levels >= 1 && levels <= 8,
                     boxes_entry,
                     box_text,

@@ -10,7 +10,7 @@ namespace DuctileContact
   namespace
   {
     void
-    refine_boxes(const MeshParameters                        &parameters,
+    refine_boxes(const MeshParameters                      &parameters,
                  parallel::distributed::Triangulation<dim> &tria)
     {
       for (const RefinementBox &box : parameters.refinement_boxes)
@@ -22,8 +22,8 @@ namespace DuctileContact
                   const Point<dim> c      = cell->center();
                   bool             inside = true;
                   for (unsigned int d = 0; d < dim; ++d)
-                    inside = inside && c[d] >= box.lower[d] &&
-                             c[d] <= box.upper[d];
+                    inside =
+                      inside && c[d] >= box.lower[d] && c[d] <= box.upper[d];
                   if (inside)
                     cell->set_refine_flag();
                 }
@@ -35,7 +35,7 @@ namespace DuctileContact
 
 
   void
-  create_scene_mesh(const MeshParameters                        &parameters,
+  create_scene_mesh(const MeshParameters                      &parameters,
                     parallel::distributed::Triangulation<dim> &tria)
   {
     if (parameters.scene == "box")

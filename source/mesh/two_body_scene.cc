@@ -33,11 +33,10 @@ namespace DuctileContact
                 p[d] = lower[d] + (upper[d] - lower[d]) * index[d] / n[d];
               vertices.push_back(p);
             }
-      const auto vertex = [&](const unsigned int i,
-                              const unsigned int j,
-                              const unsigned int k) {
-        return offset + i + (n[0] + 1) * (j + (n[1] + 1) * k);
-      };
+      const auto vertex =
+        [&](const unsigned int i, const unsigned int j, const unsigned int k) {
+          return offset + i + (n[0] + 1) * (j + (n[1] + 1) * k);
+        };
       for (unsigned int k = 0; k < n[2]; ++k)
         for (unsigned int j = 0; j < n[1]; ++j)
           for (unsigned int i = 0; i < n[0]; ++i)
@@ -60,8 +59,8 @@ namespace DuctileContact
   create_two_body_scene(const MeshParameters::TwoBodies &parameters,
                         Triangulation<dim>              &tria)
   {
-    const Point<dim> &L = parameters.plate_size;
-    const double      a = parameters.block_edge;
+    const Point<dim> &L  = parameters.plate_size;
+    const double      a  = parameters.block_edge;
     const double      z0 = L[2] + parameters.block_gap;
     const Point<dim>  block_lower(parameters.block_centre[0] - a / 2,
                                  parameters.block_centre[1] - a / 2,
@@ -72,7 +71,8 @@ namespace DuctileContact
 
     std::vector<Point<dim>>    vertices;
     std::vector<CellData<dim>> cells;
-    append_brick(Point<dim>(), L, parameters.plate_subdivisions, 0, vertices, cells);
+    append_brick(
+      Point<dim>(), L, parameters.plate_subdivisions, 0, vertices, cells);
     append_brick(block_lower,
                  block_upper,
                  parameters.block_subdivisions,

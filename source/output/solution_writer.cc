@@ -17,10 +17,11 @@ namespace DuctileContact
     const std::string                                          &directory,
     const Discretisation                                       &discretisation,
     const std::map<types::material_id, const BodyParameters *> &bodies)
-    : directory(directory)
-    , discretisation(discretisation)
-    , bodies(bodies)
-  {}
+      : directory(directory)
+      , discretisation(discretisation)
+      , bodies(bodies)
+  {
+  }
 
 
 
@@ -29,13 +30,12 @@ namespace DuctileContact
                         const double                              time,
                         const TrilinosWrappers::MPI::BlockVector &u)
   {
-    const auto &tria = discretisation.triangulation;
-    Vector<float> equivalent_stress(tria.n_active_cells()), mean_stress(
-                                                      tria.n_active_cells()),
-      jacobian(tria.n_active_cells()), body(tria.n_active_cells()),
-      rank(tria.n_active_cells());
+    const auto   &tria = discretisation.triangulation;
+    Vector<float> equivalent_stress(tria.n_active_cells()),
+      mean_stress(tria.n_active_cells()), jacobian(tria.n_active_cells()),
+      body(tria.n_active_cells()), rank(tria.n_active_cells());
 
-    hp::FEValues<dim> hp_fe_values(discretisation.mapping,
+    hp::FEValues<dim>           hp_fe_values(discretisation.mapping,
                                    discretisation.fe_collection,
                                    discretisation.quadrature,
                                    update_gradients | update_JxW_values);
@@ -62,12 +62,12 @@ namespace DuctileContact
               p += trace(m.tau) / 3. * JxW;
               J += m.J * JxW;
             }
-          const auto i   = cell->active_cell_index();
+          const auto i         = cell->active_cell_index();
           equivalent_stress[i] = vm / volume;
-          mean_stress[i] = p / volume;
-          jacobian[i]    = J / volume;
-          body[i]        = cell->material_id();
-          rank[i]        = tria.locally_owned_subdomain();
+          mean_stress[i]       = p / volume;
+          jacobian[i]          = J / volume;
+          body[i]              = cell->material_id();
+          rank[i]              = tria.locally_owned_subdomain();
         }
 
     DataOut<dim> data_out;

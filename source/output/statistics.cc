@@ -6,8 +6,9 @@
 namespace DuctileContact
 {
   Statistics::Statistics(const std::string &file_name)
-    : file_name(file_name)
-  {}
+      : file_name(file_name)
+  {
+  }
 
 
 

@@ -3,8 +3,9 @@
 namespace DuctileContact
 {
   TeeStream::Buffer::Buffer(std::streambuf *a)
-    : first(a)
-  {}
+      : first(a)
+  {
+  }
 
 
 
@@ -42,8 +43,8 @@ namespace DuctileContact
 
 
   TeeStream::TeeStream(std::ostream &screen)
-    : std::ostream(nullptr)
-    , buffer(screen.rdbuf())
+      : std::ostream(nullptr)
+      , buffer(screen.rdbuf())
   {
     rdbuf(&buffer);
   }

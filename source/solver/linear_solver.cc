@@ -17,9 +17,10 @@ namespace DuctileContact
 
   LinearSolver::LinearSolver(const LinearSolverParameters &parameters,
                              const Discretisation         &discretisation)
-    : parameters(parameters)
-    , discretisation(discretisation)
-  {}
+      : parameters(parameters)
+      , discretisation(discretisation)
+  {
+  }
 
 
 
@@ -29,7 +30,8 @@ namespace DuctileContact
     // deal.II 9.4 has no DoFTools::extract_rigid_body_modes: build them from
     // the support points. Mode r at a DoF of component c and point x:
     // translations e_r, rotations (-y, x, 0), (0, -z, y), (z, 0, -x).
-    const IndexSet &owned = discretisation.owned_partitioning[Block::displacement];
+    const IndexSet &owned =
+      discretisation.owned_partitioning[Block::displacement];
     std::vector<int> global_ids;
     for (const auto i : owned)
       global_ids.push_back(static_cast<int>(i));
@@ -57,9 +59,9 @@ namespace DuctileContact
               const Point<dim> x =
                 discretisation.mapping[0].transform_unit_to_real_cell(
                   cell, fe.unit_support_point(i));
-              const int    row = map.LID(static_cast<int>(dof_indices[i]));
-              double       mode[6] = {0, 0, 0, 0, 0, 0};
-              mode[c]              = 1.;
+              const int row     = map.LID(static_cast<int>(dof_indices[i]));
+              double    mode[6] = {0, 0, 0, 0, 0, 0};
+              mode[c]           = 1.;
               const double rot[3][3] = {{-x[1], x[0], 0.},
                                         {0., -x[2], x[1]},
                                         {x[2], 0., -x[0]}};
@@ -88,7 +90,7 @@ namespace DuctileContact
 
     if (parameters.type == "direct")
       {
-        SolverControl control(1, 0.);
+        SolverControl                                  control(1, 0.);
         TrilinosWrappers::SolverDirect::AdditionalData data(
           false, parameters.direct_solver);
         TrilinosWrappers::SolverDirect direct(control, data);

@@ -1,14 +1,14 @@
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/block_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <ductile_contact/discretisation/constraints.h>
 #include <ductile_contact/solver/newton_solver.h>
 
 #include <cmath>
-#include <limits>
 #include <iomanip>
+#include <limits>
 
 namespace DuctileContact
 {
@@ -23,15 +23,16 @@ namespace DuctileContact
     const double                         force_scale,
     ConditionalOStream                  &verbose_out,
     TimerOutput                         &timer)
-    : parameters(parameters)
-    , discretisation(discretisation)
-    , assembler(assembler)
-    , linear_solver(linear_solver)
-    , boundary_conditions(boundary_conditions)
-    , force_scale(force_scale)
-    , verbose_out(verbose_out)
-    , timer(timer)
-  {}
+      : parameters(parameters)
+      , discretisation(discretisation)
+      , assembler(assembler)
+      , linear_solver(linear_solver)
+      , boundary_conditions(boundary_conditions)
+      , force_scale(force_scale)
+      , verbose_out(verbose_out)
+      , timer(timer)
+  {
+  }
 
 
 
@@ -39,7 +40,7 @@ namespace DuctileContact
   NewtonSolver::setup()
   {
     TimerOutput::Scope scope(timer, "setup: sparsity");
-    const MPI_Comm comm = discretisation.dof_handler.get_communicator();
+    const MPI_Comm     comm = discretisation.dof_handler.get_communicator();
 
     // Same constrained DoF set as every Newton iteration (values differ).
     AffineConstraints<double> constraints;
@@ -117,8 +118,8 @@ namespace DuctileContact
                            const double       scale,
                            const bool         pending) {
       verbose_out << "      Newton " << std::setw(2) << it
-                  << ": |R| = " << std::scientific << std::setprecision(3)
-                  << r << ", |R|/|f_int| = " << (scale > 0 ? r / scale : 0.)
+                  << ": |R| = " << std::scientific << std::setprecision(3) << r
+                  << ", |R|/|f_int| = " << (scale > 0 ? r / scale : 0.)
                   << (pending ? ", Dirichlet data pending" : "")
                   << std::defaultfloat << std::endl;
     };
@@ -162,8 +163,7 @@ namespace DuctileContact
           }
         catch (const std::exception &e)
           {
-            report.failure =
-              std::string("linear solver failed: ") + e.what();
+            report.failure = std::string("linear solver failed: ") + e.what();
             return report;
           }
         constraints.distribute(delta);
@@ -185,13 +185,11 @@ namespace DuctileContact
             u_ghosted = trial;
             {
               TimerOutput::Scope scope(timer, "assembly (line search)");
-              trial_info  = assembler.assemble(u_ghosted,
-                                              t,
-                                              constraints,
-                                              {nullptr,
-                                               nullptr,
-                                               &residual,
-                                               &internal_force});
+              trial_info = assembler.assemble(
+                u_ghosted,
+                t,
+                constraints,
+                {nullptr, nullptr, &residual, &internal_force});
               trial_r     = residual.l2_norm();
               trial_scale = internal_force.l2_norm();
             }
@@ -204,8 +202,8 @@ namespace DuctileContact
                 break;
               }
             verbose_out << "        line search: step " << step
-                        << (trial_info.inverted ? " inverts an element" :
-                                                  " does not reduce |R|")
+                        << (trial_info.inverted ? " inverts an element"
+                                                : " does not reduce |R|")
                         << std::endl;
           }
         if (!accepted)
@@ -214,8 +212,8 @@ namespace DuctileContact
             return report;
           }
         verbose_out << "        linear iterations " << n_linear
-                    << (step < 1 ? ", step length " + std::to_string(step) :
-                                   std::string())
+                    << (step < 1 ? ", step length " + std::to_string(step)
+                                 : std::string())
                     << std::endl;
 
         const bool still_pending = pending && step < 1.;
@@ -228,8 +226,8 @@ namespace DuctileContact
           }
         if (it + 1 == parameters.max_iterations)
           {
-            report.failure = "no convergence in " +
-                             std::to_string(it + 1) + " Newton iterations";
+            report.failure = "no convergence in " + std::to_string(it + 1) +
+                             " Newton iterations";
             return report;
           }
       }

@@ -13,19 +13,20 @@ namespace DuctileContact
   using namespace dealii;
 
   SystemAssembler::SystemAssembler(
-    const Discretisation                                     &discretisation,
+    const Discretisation                                       &discretisation,
     const std::map<types::material_id, const BodyParameters *> &bodies,
     const std::deque<BoundaryCondition> &boundary_conditions)
-    : discretisation(discretisation)
-    , bodies(bodies)
-    , boundary_conditions(boundary_conditions)
-  {}
+      : discretisation(discretisation)
+      , bodies(bodies)
+      , boundary_conditions(boundary_conditions)
+  {
+  }
 
 
 
   AssemblyInfo
   SystemAssembler::assemble(const TrilinosWrappers::MPI::BlockVector &u,
-                            const double                               t,
+                            const double                              t,
                             const AffineConstraints<double> &constraints,
                             const AssemblyTargets           &targets) const
   {
@@ -69,11 +70,11 @@ namespace DuctileContact
       if (cell->is_locally_owned())
         {
           hp_fe_values.reinit(cell);
-          const FEValues<dim>      &fe_values = hp_fe_values.get_present_fe_values();
-          const FiniteElement<dim> &fe        = cell->get_fe();
-          const unsigned int        n_dofs    = fe.n_dofs_per_cell();
-          const unsigned int        n_q       = fe_values.n_quadrature_points;
-          const BodyParameters     &body      = *bodies.at(cell->material_id());
+          const FEValues<dim> &fe_values = hp_fe_values.get_present_fe_values();
+          const FiniteElement<dim> &fe   = cell->get_fe();
+          const unsigned int        n_dofs = fe.n_dofs_per_cell();
+          const unsigned int        n_q    = fe_values.n_quadrature_points;
+          const BodyParameters     &body   = *bodies.at(cell->material_id());
 
           cell_matrix.reinit(n_dofs, n_dofs);
           cell_f_int.reinit(n_dofs);
@@ -112,25 +113,24 @@ namespace DuctileContact
                   info.inverted = true;
                   continue;
                 }
-              const MaterialResponse m = neo_hooke(F,
+              const MaterialResponse m   = neo_hooke(F,
                                                    body.shear_modulus,
                                                    body.bulk_modulus,
                                                    with_tangent);
-              const double JxW = fe_values.JxW(q);
+              const double           JxW = fe_values.JxW(q);
               info.stored_energy += m.psi * JxW;
 
               for (unsigned int k = 0; k < n_u; ++k)
                 {
-                  shape_grad[k]    = fe_values.shape_grad(u_dofs[k], q);
-                  const unsigned a = u_component[k];
-                  const double term = (m.P[a] * shape_grad[k]) * JxW;
+                  shape_grad[k]       = fe_values.shape_grad(u_dofs[k], q);
+                  const unsigned a    = u_component[k];
+                  const double   term = (m.P[a] * shape_grad[k]) * JxW;
                   cell_f_int(u_dofs[k]) += term;
                   // F = I + Grad u holds Grad u to eps in absolute terms,
                   // so P carries errors of eps times the moduli.
                   cell_magnitude(u_dofs[k]) +=
-                    (std::abs(term) +
-                     (body.shear_modulus + body.bulk_modulus) *
-                       shape_grad[k].norm() * JxW);
+                    (std::abs(term) + (body.shear_modulus + body.bulk_modulus) *
+                                        shape_grad[k].norm() * JxW);
                   if (with_tangent)
                     for (unsigned int c = 0; c < dim; ++c)
                       for (unsigned int D = 0; D < dim; ++D)

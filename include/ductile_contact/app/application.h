@@ -1,11 +1,10 @@
 #pragma once
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/distributed/tria.h>
 
 #include <ductile_contact/app/run_parameters.h>
 #include <ductile_contact/core/types.h>
-
-#include <deal.II/distributed/tria.h>
 
 namespace DuctileContact
 {
@@ -24,7 +23,7 @@ namespace DuctileContact
    * of the mesh has a `Body <id>` subsection; throws InputError.
    */
   void
-  build_and_check_mesh(const RunParameters                               &parameters,
+  build_and_check_mesh(const RunParameters &parameters,
                        dealii::parallel::distributed::Triangulation<dim> &tria,
-                       const bool                                         refine);
+                       const bool refine);
 } // namespace DuctileContact

@@ -24,15 +24,15 @@ namespace DuctileContact
    */
   struct RunParameters
   {
-    MeshParameters         mesh;
-    unsigned int           fe_degree = 2;
+    MeshParameters mesh;
+    unsigned int   fe_degree = 2;
     // deques: entries are bound by address, so elements must not move.
     std::deque<BodyParameters>    bodies;
     std::deque<BoundaryCondition> boundary_conditions;
-    LoadSteppingParameters load_stepping;
-    NewtonParameters       newton;
-    LinearSolverParameters linear_solver;
-    OutputParameters       output;
+    LoadSteppingParameters        load_stepping;
+    NewtonParameters              newton;
+    LinearSolverParameters        linear_solver;
+    OutputParameters              output;
 
     dealii::ParameterHandler prm;
 

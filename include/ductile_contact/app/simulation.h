@@ -47,11 +47,11 @@ namespace DuctileContact
     void
     setup();
     void
-    record_step(const unsigned int        step,
-                const double              t,
-                const double              dt,
-                const NewtonReport      &report,
-                const unsigned int        cutbacks);
+    record_step(const unsigned int  step,
+                const double        t,
+                const double        dt,
+                const NewtonReport &report,
+                const unsigned int  cutbacks);
     /// Area-weighted mean displacement and integrated traction per
     /// boundary with conditions.
     struct BoundaryIntegrals
@@ -63,21 +63,21 @@ namespace DuctileContact
     boundary_integrals(const dealii::TrilinosWrappers::MPI::BlockVector &u,
                        const double t) const;
 
-    const RunParameters &parameters;
-    const MPI_Comm       comm;
-    TeeStream           &log;
+    const RunParameters       &parameters;
+    const MPI_Comm             comm;
+    TeeStream                 &log;
     dealii::ConditionalOStream pcout;
     dealii::ConditionalOStream verbose_out;
     dealii::TimerOutput        timer;
 
-    dealii::parallel::distributed::Triangulation<dim> triangulation;
+    dealii::parallel::distributed::Triangulation<dim>            triangulation;
     std::map<dealii::types::material_id, const BodyParameters *> bodies;
-    std::unique_ptr<Discretisation>  discretisation;
-    std::unique_ptr<SystemAssembler> assembler;
-    std::unique_ptr<LinearSolver>    linear_solver;
-    std::unique_ptr<NewtonSolver>    newton;
-    std::unique_ptr<SolutionWriter>  writer;
-    Statistics                       statistics;
+    std::unique_ptr<Discretisation>                              discretisation;
+    std::unique_ptr<SystemAssembler>                             assembler;
+    std::unique_ptr<LinearSolver>                                linear_solver;
+    std::unique_ptr<NewtonSolver>                                newton;
+    std::unique_ptr<SolutionWriter>                              writer;
+    Statistics                                                   statistics;
 
     /// Owned DoFs of each component on each boundary with conditions.
     std::vector<std::array<dealii::IndexSet, dim>> boundary_dofs;

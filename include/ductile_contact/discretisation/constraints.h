@@ -20,9 +20,9 @@ namespace DuctileContact
    */
   void
   make_newton_constraints(
-    const Discretisation                            &discretisation,
-    const std::deque<BoundaryCondition>             &boundary_conditions,
-    const double                                     t,
+    const Discretisation                             &discretisation,
+    const std::deque<BoundaryCondition>              &boundary_conditions,
+    const double                                      t,
     const dealii::TrilinosWrappers::MPI::BlockVector *u,
-    dealii::AffineConstraints<double>               &constraints);
+    dealii::AffineConstraints<double>                &constraints);
 } // namespace DuctileContact

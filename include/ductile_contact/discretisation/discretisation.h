@@ -37,9 +37,10 @@ namespace DuctileContact
   class Discretisation
   {
   public:
-    Discretisation(const dealii::parallel::distributed::Triangulation<dim> &tria,
-                   const unsigned int                                   degree,
-                   const std::map<dealii::types::material_id, BodyFields> &bodies);
+    Discretisation(
+      const dealii::parallel::distributed::Triangulation<dim> &tria,
+      const unsigned int                                       degree,
+      const std::map<dealii::types::material_id, BodyFields>  &bodies);
 
     /// Distributes and renumbers the DoFs; call after every mesh change.
     void
@@ -50,8 +51,8 @@ namespace DuctileContact
     fe_index(const BodyFields &fields);
 
     const dealii::parallel::distributed::Triangulation<dim> &triangulation;
-    const unsigned int                                      degree;
-    const std::map<dealii::types::material_id, BodyFields>  bodies;
+    const unsigned int                                       degree;
+    const std::map<dealii::types::material_id, BodyFields>   bodies;
 
     dealii::hp::FECollection<dim>      fe_collection;
     dealii::hp::QCollection<dim>       quadrature;

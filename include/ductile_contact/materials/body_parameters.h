@@ -16,8 +16,8 @@ namespace DuctileContact
    */
   struct BodyParameters
   {
-    dealii::types::material_id material_id = 0;
-    std::string                name        = "body";
+    dealii::types::material_id material_id   = 0;
+    std::string                name          = "body";
     double                     shear_modulus = 80.e9;
     double                     bulk_modulus  = 160.e9;
 

@@ -15,11 +15,11 @@ namespace DuctileContact
    */
   struct MaterialResponse
   {
-    double                            J = 1.;
-    double                            psi = 0.;
-    dealii::SymmetricTensor<2, dim>   tau;
-    dealii::Tensor<2, dim>            P;
-    dealii::Tensor<4, dim>            A;
+    double                          J   = 1.;
+    double                          psi = 0.;
+    dealii::SymmetricTensor<2, dim> tau;
+    dealii::Tensor<2, dim>          P;
+    dealii::Tensor<4, dim>          A;
   };
 
   /**

@@ -19,7 +19,7 @@ namespace DuctileContact
    * gmsh_scene.cc); nothing outside this folder knows which scene runs.
    */
   void
-  create_scene_mesh(const MeshParameters                        &parameters,
+  create_scene_mesh(const MeshParameters &parameters,
                     dealii::parallel::distributed::Triangulation<dim> &tria);
 
   /// A brick with boundary ids 0..5 on the faces x-, x+, y-, y+, z-, z+.
@@ -44,9 +44,11 @@ namespace DuctileContact
 
   /// Material ids present in the (distributed) mesh, on all ranks.
   std::set<dealii::types::material_id>
-  material_ids_in_mesh(const dealii::parallel::distributed::Triangulation<dim> &tria);
+  material_ids_in_mesh(
+    const dealii::parallel::distributed::Triangulation<dim> &tria);
 
   /// Boundary ids present in the (distributed) mesh, on all ranks.
   std::set<dealii::types::boundary_id>
-  boundary_ids_in_mesh(const dealii::parallel::distributed::Triangulation<dim> &tria);
+  boundary_ids_in_mesh(
+    const dealii::parallel::distributed::Triangulation<dim> &tria);
 } // namespace DuctileContact

@@ -9,9 +9,9 @@ namespace DuctileContact
   /// Subsection `Output`.
   struct OutputParameters
   {
-    std::string  directory  = "results";
-    unsigned int interval   = 1;
-    unsigned int verbosity  = 1;
+    std::string  directory = "results";
+    unsigned int interval  = 1;
+    unsigned int verbosity = 1;
 
     void
     declare(dealii::ParameterHandler &prm);

@@ -22,21 +22,21 @@ namespace DuctileContact
   class SolutionWriter
   {
   public:
-    SolutionWriter(const std::string &directory,
-                   const Discretisation &discretisation,
+    SolutionWriter(const std::string                      &directory,
+                   const Discretisation                   &discretisation,
                    const std::map<dealii::types::material_id,
                                   const BodyParameters *> &bodies);
 
     /// @p u with ghost entries. Collective; also rewrites solution.pvd.
     void
-    write(const unsigned int                                  step,
-          const double                                        time,
+    write(const unsigned int                                step,
+          const double                                      time,
           const dealii::TrilinosWrappers::MPI::BlockVector &u);
 
   private:
-    const std::string                                            directory;
-    const Discretisation                                        &discretisation;
+    const std::string     directory;
+    const Discretisation &discretisation;
     const std::map<dealii::types::material_id, const BodyParameters *> bodies;
-    std::vector<std::pair<double, std::string>>                  records;
+    std::vector<std::pair<double, std::string>>                        records;
   };
 } // namespace DuctileContact

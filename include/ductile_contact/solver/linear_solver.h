@@ -8,7 +8,6 @@
 #include <ductile_contact/solver/solver_parameters.h>
 
 #include <Epetra_MultiVector.h>
-
 #include <memory>
 
 namespace DuctileContact

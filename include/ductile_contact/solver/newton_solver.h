@@ -19,16 +19,16 @@ namespace DuctileContact
   /// Outcome of one Newton solve (one load step).
   struct NewtonReport
   {
-    bool                converged          = false;
-    unsigned int        iterations         = 0;
-    unsigned int        linear_iterations  = 0;
+    bool         converged         = false;
+    unsigned int iterations        = 0;
+    unsigned int linear_iterations = 0;
     /// ||R|| of the iterations whose Dirichlet data were reached.
     std::vector<double> residual_norms;
     /// Observed order log(r_k+1/r_k)/log(r_k/r_k-1) of the last three
     /// residuals (2 = quadratic); NaN if fewer than three are meaningful.
-    double              convergence_rate = std::numeric_limits<double>::quiet_NaN();
-    std::string         failure;
-    AssemblyInfo        info;
+    double       convergence_rate = std::numeric_limits<double>::quiet_NaN();
+    std::string  failure;
+    AssemblyInfo info;
   };
 
   /**
@@ -63,7 +63,7 @@ namespace DuctileContact
      * On failure @p u is unspecified: the caller restores its copy.
      */
     NewtonReport
-    solve(const double                                 t,
+    solve(const double                                t,
           dealii::TrilinosWrappers::MPI::BlockVector &u,
           dealii::TrilinosWrappers::MPI::BlockVector &internal_force);
 

@@ -14,11 +14,11 @@ namespace DuctileContact
    */
   struct LoadSteppingParameters
   {
-    double       end_time           = 1.;
-    double       time_step          = 0.1;
-    double       minimum_time_step  = 1.e-6;
-    double       growth_factor      = 1.5;
-    unsigned int easy_newton_steps  = 5;
+    double       end_time          = 1.;
+    double       time_step         = 0.1;
+    double       minimum_time_step = 1.e-6;
+    double       growth_factor     = 1.5;
+    unsigned int easy_newton_steps = 5;
 
     void
     declare(dealii::ParameterHandler &prm);
@@ -32,11 +32,11 @@ namespace DuctileContact
    */
   struct NewtonParameters
   {
-    unsigned int max_iterations          = 15;
-    double       relative_tolerance      = 1.e-9;
-    double       absolute_tolerance      = 1.e-12;
-    bool         line_search             = true;
-    unsigned int max_line_search_steps   = 6;
+    unsigned int max_iterations        = 15;
+    double       relative_tolerance    = 1.e-9;
+    double       absolute_tolerance    = 1.e-12;
+    bool         line_search           = true;
+    unsigned int max_line_search_steps = 6;
 
     void
     declare(dealii::ParameterHandler &prm);
@@ -48,13 +48,13 @@ namespace DuctileContact
   struct LinearSolverParameters
   {
     /// direct | cg-amg | gmres-amg
-    std::string  type                   = "direct";
+    std::string type = "direct";
     /// Amesos_Klu | Amesos_Mumps
-    std::string  direct_solver          = "Amesos_Mumps";
-    double       relative_tolerance     = 1.e-8;
-    unsigned int max_iterations         = 2000;
-    double       aggregation_threshold  = 1.e-4;
-    unsigned int smoother_sweeps        = 2;
+    std::string  direct_solver         = "Amesos_Mumps";
+    double       relative_tolerance    = 1.e-8;
+    unsigned int max_iterations        = 2000;
+    double       aggregation_threshold = 1.e-4;
+    unsigned int smoother_sweeps       = 2;
 
     void
     declare(dealii::ParameterHandler &prm);

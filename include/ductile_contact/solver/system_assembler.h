@@ -18,8 +18,8 @@ namespace DuctileContact
   {
     /// An element is inverted (J <= 0 at a quadrature point): the state
     /// is not admissible and nothing else here is meaningful.
-    bool   inverted     = false;
-    double min_J        = 1.;
+    bool   inverted = false;
+    double min_J    = 1.;
     /// int Psi dV over the reference configuration [J].
     double stored_energy = 0.;
     /// Size of the terms summed into f_int: sqrt of the sum over cells and
@@ -58,22 +58,22 @@ namespace DuctileContact
   class SystemAssembler
   {
   public:
-    SystemAssembler(const Discretisation                        &discretisation,
+    SystemAssembler(const Discretisation                   &discretisation,
                     const std::map<dealii::types::material_id,
-                                   const BodyParameters *>      &bodies,
-                    const std::deque<BoundaryCondition>         &boundary_conditions);
+                                   const BodyParameters *> &bodies,
+                    const std::deque<BoundaryCondition> &boundary_conditions);
 
     /// @p u must have ghost entries. Matrices/vectors in @p targets are
     /// zeroed and compressed here.
     AssemblyInfo
     assemble(const dealii::TrilinosWrappers::MPI::BlockVector &u,
-             const double                                       t,
-             const dealii::AffineConstraints<double>           &constraints,
-             const AssemblyTargets                             &targets) const;
+             const double                                      t,
+             const dealii::AffineConstraints<double>          &constraints,
+             const AssemblyTargets                            &targets) const;
 
   private:
-    const Discretisation                                    &discretisation;
+    const Discretisation &discretisation;
     const std::map<dealii::types::material_id, const BodyParameters *> bodies;
-    const std::deque<BoundaryCondition>                     &boundary_conditions;
+    const std::deque<BoundaryCondition> &boundary_conditions;
   };
 } // namespace DuctileContact
