@@ -25,7 +25,8 @@ main(int argc, char **argv)
   const double       tolerance[3]   = {3e-3, 8e-4, 2e-5};
   for (unsigned int run = 0; run < 3; ++run)
     {
-      out << "Q" << degree[run] << ", h = l_f/" << cells[run] << ":" << std::endl;
+      out << "Q" << degree[run] << ", h = l_f/" << cells[run] << ":"
+          << std::endl;
       bool ok = true;
       for (unsigned int k = 0; k < 4; ++k)
         {
@@ -33,11 +34,11 @@ main(int argc, char **argv)
             degree[run], half_length[k], cells[run], "direct", MPI_COMM_WORLD);
           const double error = std::abs(r.gamma - reference[k]) / reference[k];
           ok                 = ok && error < tolerance[run];
-          out << "  L = " << half_length[k] << " l_f: Gamma = "
-              << std::setprecision(5) << r.gamma << std::setprecision(6)
-              << std::endl;
+          out << "  L = " << half_length[k]
+              << " l_f: Gamma = " << std::setprecision(5) << r.gamma
+              << std::setprecision(6) << std::endl;
         }
-      out << "  within " << tolerance[run] << " of Gamma(L): "
-          << Testing::yes_no(ok) << std::endl;
+      out << "  within " << tolerance[run]
+          << " of Gamma(L): " << Testing::yes_no(ok) << std::endl;
     }
 }

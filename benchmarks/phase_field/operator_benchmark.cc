@@ -15,7 +15,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool                               root =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   if (root)
     std::cout << "problem degree solver h n_dofs err_L2 err_H1 err_H2 "
                  "assembly_s solve_s iterations\n";
@@ -52,8 +53,7 @@ main(int argc, char **argv)
             std::cout << "strip " << degree << " " << solver << " " << 1. / n
                       << " " << s.info.n_dofs << " "
                       << std::abs(s.gamma - 0.99804) / 0.99804 << " - - "
-                      << s.info.assembly_seconds << " "
-                      << s.info.solve_seconds << " "
-                      << s.info.linear_iterations << std::endl;
+                      << s.info.assembly_seconds << " " << s.info.solve_seconds
+                      << " " << s.info.linear_iterations << std::endl;
         }
 }

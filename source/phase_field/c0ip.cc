@@ -38,8 +38,8 @@ namespace DuctileContact
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       if (fe.system_to_component_index(i).first == s.component)
         dofs.push_back(i);
-    const unsigned int  n = dofs.size();
-    std::vector<double> value(n), laplacian(n);
+    const unsigned int          n = dofs.size();
+    std::vector<double>         value(n), laplacian(n);
     std::vector<Tensor<1, dim>> gradient(n);
     for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
       {
@@ -69,8 +69,8 @@ namespace DuctileContact
                       const double                      h_inverse,
                       FullMatrix<double>               &face_matrix)
   {
-    const unsigned int n = fiv.n_current_interface_dofs();
-    const auto        &q_points = fiv.get_quadrature_points();
+    const unsigned int  n        = fiv.n_current_interface_dofs();
+    const auto         &q_points = fiv.get_quadrature_points();
     std::vector<double> jump_dn(n), mean_laplacian(n);
     const double        gamma = c.penalty * h_inverse;
     for (unsigned int q = 0; q < q_points.size(); ++q)
@@ -85,12 +85,11 @@ namespace DuctileContact
         for (unsigned int i = 0; i < n; ++i)
           if (jump_dn[i] != 0. || mean_laplacian[i] != 0.)
             for (unsigned int j = 0; j < n; ++j)
-              face_matrix(i, j) +=
-                c.bilaplacian *
-                (-mean_laplacian[i] * jump_dn[j] -
-                 jump_dn[i] * mean_laplacian[j] +
-                 gamma * jump_dn[i] * jump_dn[j]) *
-                JxW;
+              face_matrix(i, j) += c.bilaplacian *
+                                   (-mean_laplacian[i] * jump_dn[j] -
+                                    jump_dn[i] * mean_laplacian[j] +
+                                    gamma * jump_dn[i] * jump_dn[j]) *
+                                   JxW;
       }
   }
 
@@ -98,8 +97,8 @@ namespace DuctileContact
 
   void
   for_each_interior_face(
-    const DoFHandler<dim>                                     &dof_handler,
-    FEInterfaceValues<dim>                                    &fiv,
+    const DoFHandler<dim>  &dof_handler,
+    FEInterfaceValues<dim> &fiv,
     const std::function<void(const FEInterfaceValues<dim> &, const double)>
                       &work,
     const unsigned int active_fe_index)
@@ -120,39 +119,45 @@ namespace DuctileContact
             const auto neighbor =
               periodic ? cell->periodic_neighbor(f) : cell->neighbor(f);
             const unsigned int neighbor_face =
-              periodic ? cell->periodic_neighbor_face_no(f) :
-                         cell->neighbor_face_no(f);
+              periodic ? cell->periodic_neighbor_face_no(f)
+                       : cell->neighbor_face_no(f);
             if (neighbor->has_children())
               continue; // visited from the finer side
             if (neighbor->active_fe_index() != active_fe_index)
               continue;
             const double h_inverse =
-              0.5 * (1. / extent(cell, f) + 1. / extent(neighbor, neighbor_face));
-            const bool coarser = periodic ? cell->periodic_neighbor_is_coarser(f) :
-                                            cell->neighbor_is_coarser(f);
+              0.5 *
+              (1. / extent(cell, f) + 1. / extent(neighbor, neighbor_face));
+            const bool coarser = periodic
+                                   ? cell->periodic_neighbor_is_coarser(f)
+                                   : cell->neighbor_is_coarser(f);
             if (coarser)
               {
                 const auto [nf, nsf] =
-                  periodic ?
-                    cell->periodic_neighbor_of_coarser_periodic_neighbor(f) :
-                    cell->neighbor_of_coarser_neighbor(f);
-                fiv.reinit(cell, f, numbers::invalid_unsigned_int, neighbor,
-                           nf, nsf);
+                  periodic
+                    ? cell->periodic_neighbor_of_coarser_periodic_neighbor(f)
+                    : cell->neighbor_of_coarser_neighbor(f);
+                fiv.reinit(
+                  cell, f, numbers::invalid_unsigned_int, neighbor, nf, nsf);
               }
             else
               {
                 // (A cell can be its own periodic neighbour: then the face
                 // with the smaller number takes the pair.)
                 const bool mine =
-                  neighbor == cell ?
-                    f < neighbor_face :
-                    (neighbor->is_locally_owned() ?
-                       cell->id() < neighbor->id() :
-                       cell->subdomain_id() < neighbor->subdomain_id());
+                  neighbor == cell
+                    ? f < neighbor_face
+                    : (neighbor->is_locally_owned()
+                         ? cell->id() < neighbor->id()
+                         : cell->subdomain_id() < neighbor->subdomain_id());
                 if (!mine)
                   continue;
-                fiv.reinit(cell, f, numbers::invalid_unsigned_int, neighbor,
-                           neighbor_face, numbers::invalid_unsigned_int);
+                fiv.reinit(cell,
+                           f,
+                           numbers::invalid_unsigned_int,
+                           neighbor,
+                           neighbor_face,
+                           numbers::invalid_unsigned_int);
               }
             work(fiv, h_inverse);
           }

@@ -45,8 +45,8 @@ namespace DuctileContact
           {
             g[d] = -numbers::PI;
             for (unsigned int e = 0; e < dim; ++e)
-              g[d] *= (e == d) ? std::sin(numbers::PI * p[e]) :
-                                 std::cos(numbers::PI * p[e]);
+              g[d] *= (e == d) ? std::sin(numbers::PI * p[e])
+                               : std::cos(numbers::PI * p[e]);
           }
         return g;
       }
@@ -61,9 +61,9 @@ namespace DuctileContact
             {
               double v = (d == e) ? -pi2 : pi2;
               for (unsigned int k = 0; k < dim; ++k)
-                v *= (k == d || k == e) && d != e ?
-                       std::sin(numbers::PI * p[k]) :
-                       std::cos(numbers::PI * p[k]);
+                v *= (k == d || k == e) && d != e
+                       ? std::sin(numbers::PI * p[k])
+                       : std::cos(numbers::PI * p[k]);
               H[d][e] = v;
             }
         return H;
@@ -77,17 +77,30 @@ namespace DuctileContact
     {
     public:
       ScalarC0IPSystem(parallel::distributed::Triangulation<dim> &tria,
-                       const unsigned int                          degree)
-        : fe(degree)
-        , mapping(1)
-        , dof_handler(tria)
-        , quadrature(degree + 1)
-        , face_quadrature(degree + 1)
+                       const unsigned int                         degree)
+          : fe(degree)
+          , mapping(1)
+          , dof_handler(tria)
+          , quadrature(degree + 1)
+          , face_quadrature(degree + 1)
       {
         dof_handler.distribute_dofs(fe);
-        owned    = dof_handler.locally_owned_dofs();
+        owned = dof_handler.locally_owned_dofs();
         DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
         constraints.reinit(relevant);
+      }
+
+      /// What the C0IP face terms need on an interface.
+      FEInterfaceValues<dim>
+      interface_values() const
+      {
+        return FEInterfaceValues<dim>(mapping,
+                                      fe,
+                                      face_quadrature,
+                                      update_gradients | update_hessians |
+                                        update_quadrature_points |
+                                        update_normal_vectors |
+                                        update_JxW_values);
       }
 
       /// After the constraints are final.
@@ -96,7 +109,10 @@ namespace DuctileContact
       {
         constraints.close();
         DynamicSparsityPattern dsp(relevant);
-        DoFTools::make_flux_sparsity_pattern(dof_handler, dsp, constraints, false);
+        DoFTools::make_flux_sparsity_pattern(dof_handler,
+                                             dsp,
+                                             constraints,
+                                             false);
         SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
         matrix.reinit(owned, owned, dsp, comm);
         rhs.reinit(owned, comm);
@@ -109,16 +125,16 @@ namespace DuctileContact
       void
       assemble(const C0IPCoefficients &c, const CellRhs &cell_rhs)
       {
-        const FEValuesExtractors::Scalar s(0);
-        FEValues<dim>                    fe_values(mapping,
+        const FEValuesExtractors::Scalar     s(0);
+        FEValues<dim>                        fe_values(mapping,
                                 fe,
                                 quadrature,
                                 update_values | update_gradients |
                                   update_hessians | update_quadrature_points |
                                   update_JxW_values);
-        const unsigned int               n = fe.n_dofs_per_cell();
-        FullMatrix<double>               cell_matrix(n, n);
-        Vector<double>                   cell_vector(n);
+        const unsigned int                   n = fe.n_dofs_per_cell();
+        FullMatrix<double>                   cell_matrix(n, n);
+        Vector<double>                       cell_vector(n);
         std::vector<types::global_dof_index> dofs(n);
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
@@ -133,27 +149,25 @@ namespace DuctileContact
                 cell_matrix, cell_vector, dofs, matrix, rhs);
             }
 
-        FEInterfaceValues<dim> fiv(mapping,
-                                   fe,
-                                   face_quadrature,
-                                   update_gradients | update_hessians |
-                                     update_quadrature_points |
-                                     update_normal_vectors | update_JxW_values);
-        FullMatrix<double> face_matrix;
-        Vector<double>     face_vector;
+        FEInterfaceValues<dim> fiv = interface_values();
+        FullMatrix<double>     face_matrix;
+        Vector<double>         face_vector;
         for_each_interior_face(
-          dof_handler, fiv, [&](const FEInterfaceValues<dim> &f, const double h_inv) {
+          dof_handler,
+          fiv,
+          [&](const FEInterfaceValues<dim> &f, const double h_inv) {
             const unsigned int m = f.n_current_interface_dofs();
             face_matrix.reinit(m, m);
             face_vector.reinit(m);
             add_c0ip_face_terms(f, s, c, h_inv, face_matrix);
             // With a vector, inhomogeneous constraints (the strip's s = 1)
             // move their face-term contributions to the right-hand side.
-            constraints.distribute_local_to_global(face_matrix,
-                                                   face_vector,
-                                                   f.get_interface_dof_indices(),
-                                                   matrix,
-                                                   rhs);
+            constraints.distribute_local_to_global(
+              face_matrix,
+              face_vector,
+              f.get_interface_dof_indices(),
+              matrix,
+              rhs);
           });
         matrix.compress(VectorOperation::add);
         rhs.compress(VectorOperation::add);
@@ -165,7 +179,7 @@ namespace DuctileContact
         TrilinosWrappers::MPI::Vector x(owned, matrix.get_mpi_communicator());
         if (solver == "direct")
           {
-            SolverControl control(1, 0);
+            SolverControl                  control(1, 0);
             TrilinosWrappers::SolverDirect direct(
               control,
               TrilinosWrappers::SolverDirect::AdditionalData(false,
@@ -195,15 +209,15 @@ namespace DuctileContact
       double
       energy_form(const C0IPCoefficients &c) const
       {
-        double                       sum = 0;
-        FEValues<dim>                fe_values(mapping,
+        double              sum = 0;
+        FEValues<dim>       fe_values(mapping,
                                 fe,
                                 quadrature,
                                 update_values | update_gradients |
                                   update_hessians | update_JxW_values);
-        std::vector<double>          v(quadrature.size()), lap(quadrature.size());
-        std::vector<Tensor<1, dim>>  g(quadrature.size());
-        std::vector<Tensor<2, dim>>  H(quadrature.size());
+        std::vector<double> v(quadrature.size()), lap(quadrature.size());
+        std::vector<Tensor<1, dim>> g(quadrature.size());
+        std::vector<Tensor<2, dim>> H(quadrature.size());
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
             {
@@ -216,15 +230,12 @@ namespace DuctileContact
                         c.bilaplacian * trace(H[q]) * trace(H[q])) *
                        fe_values.JxW(q);
             }
-        FEInterfaceValues<dim> fiv(mapping,
-                                   fe,
-                                   face_quadrature,
-                                   update_gradients | update_hessians |
-                                     update_quadrature_points |
-                                     update_normal_vectors | update_JxW_values);
+        FEInterfaceValues<dim>           fiv = interface_values();
         const FEValuesExtractors::Scalar s(0);
         for_each_interior_face(
-          dof_handler, fiv, [&](const FEInterfaceValues<dim> &f, const double h_inv) {
+          dof_handler,
+          fiv,
+          [&](const FEInterfaceValues<dim> &f, const double h_inv) {
             const auto &dofs = f.get_interface_dof_indices();
             for (unsigned int q = 0; q < f.n_quadrature_points; ++q)
               {
@@ -233,26 +244,27 @@ namespace DuctileContact
                   {
                     jump += solution(dofs[i]) *
                             (f[s].jump_in_gradients(i, q) * f.normal(q));
-                    mean_lap += solution(dofs[i]) *
-                                trace(f[s].average_of_hessians(i, q));
+                    mean_lap +=
+                      solution(dofs[i]) * trace(f[s].average_of_hessians(i, q));
                   }
-                sum += c.bilaplacian *
-                       (-2. * mean_lap * jump + c.penalty * h_inv * jump * jump) *
-                       f.JxW(q);
+                sum +=
+                  c.bilaplacian *
+                  (-2. * mean_lap * jump + c.penalty * h_inv * jump * jump) *
+                  f.JxW(q);
               }
           });
         return Utilities::MPI::sum(sum, matrix.get_mpi_communicator());
       }
 
-      FE_Q<dim>                            fe;
-      MappingQ<dim>                        mapping;
-      DoFHandler<dim>                      dof_handler;
-      QGauss<dim>                          quadrature;
-      QGauss<dim - 1>                      face_quadrature;
-      IndexSet                             owned, relevant;
-      AffineConstraints<double>            constraints;
-      TrilinosWrappers::SparseMatrix       matrix;
-      TrilinosWrappers::MPI::Vector        rhs, solution;
+      FE_Q<dim>                      fe;
+      MappingQ<dim>                  mapping;
+      DoFHandler<dim>                dof_handler;
+      QGauss<dim>                    quadrature;
+      QGauss<dim - 1>                face_quadrature;
+      IndexSet                       owned, relevant;
+      AffineConstraints<double>      constraints;
+      TrilinosWrappers::SparseMatrix matrix;
+      TrilinosWrappers::MPI::Vector  rhs, solution;
     };
   } // namespace
 
@@ -265,8 +277,8 @@ namespace DuctileContact
                           const std::string      &solver,
                           const MPI_Comm          comm)
   {
-    ManufacturedErrors result;
-    Timer              timer(comm);
+    ManufacturedErrors                        result;
+    Timer                                     timer(comm);
     parallel::distributed::Triangulation<dim> tria(comm);
     GridGenerator::hyper_cube(tria, 0., 1.);
     tria.refine_global(refinements);
@@ -280,7 +292,8 @@ namespace DuctileContact
     const CosineSolution exact;
     const double         pi2 = numbers::PI * numbers::PI;
     // L s = (mass + 3 pi^2 gradient + 9 pi^4 bilaplacian) s
-    const double factor = c.mass + 3 * pi2 * c.gradient + 9 * pi2 * pi2 * c.bilaplacian;
+    const double factor =
+      c.mass + 3 * pi2 * c.gradient + 9 * pi2 * pi2 * c.bilaplacian;
     FEFaceValues<dim> face_values(system.mapping,
                                   system.fe,
                                   system.face_quadrature,
@@ -288,30 +301,31 @@ namespace DuctileContact
                                     update_quadrature_points |
                                     update_JxW_values);
     timer.restart();
-    system.assemble(c, [&](const auto &cell, const FEValues<dim> &fv, Vector<double> &b) {
-      for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
-        {
-          const double f = factor * exact.value(fv.quadrature_point(q));
-          for (unsigned int i = 0; i < fv.dofs_per_cell; ++i)
-            b(i) += f * fv.shape_value(i, q) * fv.JxW(q);
-        }
-      // Natural-condition data: int_dB bilaplacian Lap s d_n v dA.
-      for (const unsigned int f : cell->face_indices())
-        if (cell->at_boundary(f))
+    system.assemble(
+      c, [&](const auto &cell, const FEValues<dim> &fv, Vector<double> &b) {
+        for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
           {
-            face_values.reinit(cell, f);
-            for (unsigned int q = 0; q < face_values.n_quadrature_points; ++q)
-              {
-                const double lap_s =
-                  trace(exact.hessian(face_values.quadrature_point(q)));
-                for (unsigned int i = 0; i < fv.dofs_per_cell; ++i)
-                  b(i) += c.bilaplacian * lap_s *
-                          (face_values.shape_grad(i, q) *
-                           face_values.normal_vector(q)) *
-                          face_values.JxW(q);
-              }
+            const double f = factor * exact.value(fv.quadrature_point(q));
+            for (unsigned int i = 0; i < fv.dofs_per_cell; ++i)
+              b(i) += f * fv.shape_value(i, q) * fv.JxW(q);
           }
-    });
+        // Natural-condition data: int_dB bilaplacian Lap s d_n v dA.
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f))
+            {
+              face_values.reinit(cell, f);
+              for (unsigned int q = 0; q < face_values.n_quadrature_points; ++q)
+                {
+                  const double lap_s =
+                    trace(exact.hessian(face_values.quadrature_point(q)));
+                  for (unsigned int i = 0; i < fv.dofs_per_cell; ++i)
+                    b(i) += c.bilaplacian * lap_s *
+                            (face_values.shape_grad(i, q) *
+                             face_values.normal_vector(q)) *
+                            face_values.JxW(q);
+                }
+            }
+      });
     result.info.assembly_seconds = timer.wall_time();
     timer.restart();
     system.solve(solver, result.info);
@@ -319,18 +333,29 @@ namespace DuctileContact
 
     const QGauss<dim> error_quadrature(degree + 2);
     Vector<double>    cellwise(tria.n_active_cells());
-    VectorTools::integrate_difference(system.mapping, system.dof_handler,
-                                      system.solution, exact, cellwise,
-                                      error_quadrature, VectorTools::L2_norm);
-    result.l2 = VectorTools::compute_global_error(tria, cellwise,
-                                                  VectorTools::L2_norm);
-    VectorTools::integrate_difference(system.mapping, system.dof_handler,
-                                      system.solution, exact, cellwise,
-                                      error_quadrature, VectorTools::H1_seminorm);
-    result.h1 = VectorTools::compute_global_error(tria, cellwise,
+    VectorTools::integrate_difference(system.mapping,
+                                      system.dof_handler,
+                                      system.solution,
+                                      exact,
+                                      cellwise,
+                                      error_quadrature,
+                                      VectorTools::L2_norm);
+    result.l2 =
+      VectorTools::compute_global_error(tria, cellwise, VectorTools::L2_norm);
+    VectorTools::integrate_difference(system.mapping,
+                                      system.dof_handler,
+                                      system.solution,
+                                      exact,
+                                      cellwise,
+                                      error_quadrature,
+                                      VectorTools::H1_seminorm);
+    result.h1 = VectorTools::compute_global_error(tria,
+                                                  cellwise,
                                                   VectorTools::H1_seminorm);
 
-    FEValues<dim> fe_values(system.mapping, system.fe, error_quadrature,
+    FEValues<dim>               fe_values(system.mapping,
+                            system.fe,
+                            error_quadrature,
                             update_hessians | update_quadrature_points |
                               update_JxW_values);
     std::vector<Tensor<2, dim>> H(error_quadrature.size());
@@ -341,7 +366,8 @@ namespace DuctileContact
           fe_values.reinit(cell);
           fe_values.get_function_hessians(system.solution, H);
           for (unsigned int q = 0; q < H.size(); ++q)
-            h2 += (H[q] - Tensor<2, dim>(exact.hessian(fe_values.quadrature_point(q))))
+            h2 += (H[q] -
+                   Tensor<2, dim>(exact.hessian(fe_values.quadrature_point(q))))
                     .norm_square() *
                   fe_values.JxW(q);
         }
@@ -358,17 +384,18 @@ namespace DuctileContact
                     const std::string &solver,
                     const MPI_Comm     comm)
   {
-    StripResult result;
-    Timer       timer(comm);
-    const double h = 1. / cells_per_lf;
+    StripResult                               result;
+    Timer                                     timer(comm);
+    const double                              h = 1. / cells_per_lf;
     parallel::distributed::Triangulation<dim> tria(comm);
-    const unsigned int n_x =
+    const unsigned int                        n_x =
       2 * static_cast<unsigned int>(std::lround(half_length * cells_per_lf));
     // Periodic in y and z: an infinite plate, so the exact minimiser is the
     // 1-D profile. (With natural conditions on the lateral faces, Lap s = 0
     // holds there weakly and the field bends across the bar to lower the
     // energy below Gamma(L): -19 % for a bar one cell of l_f/8 wide.)
-    GridGenerator::subdivided_hyper_rectangle(tria, {n_x, 1, 1},
+    GridGenerator::subdivided_hyper_rectangle(tria,
+                                              {n_x, 1, 1},
                                               Point<dim>(-half_length, 0, 0),
                                               Point<dim>(half_length, h, h),
                                               true);
@@ -379,10 +406,10 @@ namespace DuctileContact
     GridTools::collect_periodic_faces(tria, 4, 5, 2, pairs);
     tria.add_periodicity(pairs);
     ScalarC0IPSystem system(tria, degree);
-    DoFTools::make_periodicity_constraints(system.dof_handler, 2, 3, 1,
-                                           system.constraints);
-    DoFTools::make_periodicity_constraints(system.dof_handler, 4, 5, 2,
-                                           system.constraints);
+    DoFTools::make_periodicity_constraints(
+      system.dof_handler, 2, 3, 1, system.constraints);
+    DoFTools::make_periodicity_constraints(
+      system.dof_handler, 4, 5, 2, system.constraints);
 
     // s = 1 on the crack plane x = 0 (an interior plane of vertices).
     std::vector<types::global_dof_index> face_dofs(system.fe.n_dofs_per_face());
@@ -407,7 +434,9 @@ namespace DuctileContact
     const C0IPCoefficients c =
       C0IPCoefficients::crack_functional(1., 1., degree);
     timer.restart();
-    system.assemble(c, [](const auto &, const FEValues<dim> &, Vector<double> &) {});
+    system.assemble(c,
+                    [](const auto &, const FEValues<dim> &, Vector<double> &) {
+                    });
     result.info.assembly_seconds = timer.wall_time();
     timer.restart();
     system.solve(solver, result.info);

@@ -37,7 +37,9 @@ namespace DuctileContact
 
     /// The coefficients of g_c gamma for the length scale l_f.
     static C0IPCoefficients
-    crack_functional(const double l_f, const double g_c, const unsigned int degree);
+    crack_functional(const double       l_f,
+                     const double       g_c,
+                     const unsigned int degree);
   };
 
   /**
@@ -89,9 +91,9 @@ namespace DuctileContact
    */
   void
   for_each_interior_face(
-    const dealii::DoFHandler<dim> &dof_handler,
-    dealii::FEInterfaceValues<dim> &fiv,
+    const dealii::DoFHandler<dim>                     &dof_handler,
+    dealii::FEInterfaceValues<dim>                    &fiv,
     const std::function<void(const dealii::FEInterfaceValues<dim> &fiv,
                              const double h_inverse)> &work,
-    const unsigned int active_fe_index = 0);
+    const unsigned int                                 active_fe_index = 0);
 } // namespace DuctileContact
