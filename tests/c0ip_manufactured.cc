@@ -3,7 +3,8 @@
 // solution s = cos(pi x) cos(pi y) cos(pi z) on the unit cube,
 // coefficients mass = 1/2, gradient = 1, bilaplacian = 1/2 (l_f = 1),
 // default penalty 1.5 p(p+1) (see default_c0ip_penalty). Errors and
-// observed orders on h = 1/4, 1/8, 1/16 (Q2) and 1/2, 1/4, 1/8 (Q3);
+// observed orders on h = 1/2, 1/4, 1/8 (the 2x2x2 mesh is symmetric enough
+// that the face terms vanish there, so only the last order is checked);
 // expected asymptotic orders (L2, H1, broken H2) are (2, 2, 1) for Q2 and
 // (4, 3, 2) for Q3 (deal.II step-47). The last orders must reach at least
 // (1.8, 1.8, 0.9) for Q2 and, still pre-asymptotic on these meshes,
@@ -32,7 +33,7 @@ main(int argc, char **argv)
       c.penalty     = default_c0ip_penalty(degree);
       out << "Q" << degree << ":" << std::endl;
       ManufacturedErrors previous;
-      const unsigned int coarsest = (degree == 2) ? 2 : 1;
+      const unsigned int coarsest = 1;
       double             order[3] = {0, 0, 0};
       for (unsigned int r = coarsest; r <= coarsest + 2; ++r)
         {
