@@ -1,0 +1,91 @@
+#pragma once
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <ductile_contact/core/types.h>
+
+namespace DuctileContact
+{
+  /**
+   * Material parameters of the finite-strain visco-plastic J2 model with
+   * saturation hardening and crack degradation (model.md sections 2-3).
+   * Stresses and moduli in Pa, viscosity eta_p in Pa times pseudo time.
+   */
+  struct PlasticityParameters
+  {
+    double shear_modulus       = 1.;  ///< mu
+    double bulk_modulus        = 2.5; ///< kappa
+    double initial_yield       = 0.005; ///< y_0
+    double saturation_yield    = 0.006; ///< y_inf
+    double saturation_exponent = 25.;   ///< eta in (21)
+    double linear_hardening    = 0.;    ///< h in (21)
+    double viscosity           = 1e-3;  ///< eta_p in (34)
+    double degradation_a       = 2.;    ///< a_g in g(s)
+    double residual_stiffness  = 1e-8;  ///< k in g_k(s)
+  };
+
+  /// Saturation hardening yhat(alpha), model.md (21).
+  double
+  hardening_stress(const double alpha, const PlasticityParameters &p);
+
+  /// Degradation g_k(s) = (1 - k) g(s) + k, model.md section 2.
+  double
+  degradation(const double s, const PlasticityParameters &p);
+
+  /// Quadrature-point history, committed only on accepted steps.
+  struct PlasticHistory
+  {
+    /// (C^p)^{-1}, symmetric with determinant 1.
+    dealii::SymmetricTensor<2, dim> Cp_inv = dealii::unit_symmetric_tensor<dim>();
+    /// alpha_n
+    double alpha = 0.;
+  };
+
+  /**
+   * Result of plastic_update(). r is the local part of the hardening
+   * equation (50) per unit volume, r = eta_p (alpha - alpha_n)/dt +
+   * chi_p (yhat(alpha) - sqrt(3/2) |tau_dev|) (the gradient term
+   * y_0 l_p^2 grad alpha . grad dalpha is added by the assembly).
+   */
+  struct PlasticResponse
+  {
+    double                          J = 1.;
+    double                          psi_elastic = 0.; ///< degraded Psi^e (16)
+    double                          psi_plus    = 0.; ///< crack driver psi^+ (27)
+    dealii::SymmetricTensor<2, dim> tau;
+    dealii::Tensor<2, dim>          P;
+    double                          r = 0.;
+    bool                            yielding = false; ///< chi_p
+    PlasticHistory                  updated;
+
+    /// Exact tangents (filled when requested).
+    dealii::Tensor<4, dim> dP_dF;
+    dealii::Tensor<2, dim> dP_dalpha, dP_ds;
+    dealii::Tensor<2, dim> dr_dF;
+    double                 dr_dalpha = 0., dr_ds = 0.;
+  };
+
+  /**
+   * Material point update of model.md section 3, steps 1-3, a pure
+   * function: trial state b_tr = F (C^p_n)^{-1} F^T, yield check with the
+   * degraded trial stress, then, if yielding, lambda_p = sqrt(3/2) (alpha -
+   * alpha_n)/dt (never negative) and
+   *   (C^p)^{-1} = (C^p_n)^{-1} - 2/3 dt lambda_p tr[b_tr] F^{-1} n_tr F^{-T},
+   * rescaled to determinant 1 (plastic incompressibility to round-off);
+   * finally tau = kappa g_vol(s) (J^2 - J) I + mu g_dev(s) dev[bbar^e].
+   *
+   * The tangents with respect to F, alpha and s are exact: forward-mode
+   * automatic differentiation (Sacado SFad with 11 directions) of the same
+   * code (the yield switch chi_p and the clamp of lambda_p are fixed at
+   * their values, as in Newton's method).
+   */
+  PlasticResponse
+  plastic_update(const dealii::Tensor<2, dim>      &F,
+                 const PlasticHistory              &history_n,
+                 const double                       alpha,
+                 const double                       s,
+                 const double                       dt,
+                 const PlasticityParameters        &parameters,
+                 const bool                         with_tangent);
+} // namespace DuctileContact

@@ -1,0 +1,209 @@
+#include <deal.II/differentiation/ad.h>
+
+#include <ductile_contact/materials/plasticity.h>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // deal.II's tensors accept Sacado's DFad (not SFad) as a scalar type.
+    using ADNumber = Sacado::Fad::DFad<double>;
+
+    inline double
+    value_of(const double x)
+    {
+      return x;
+    }
+
+    inline double
+    value_of(const ADNumber &x)
+    {
+      return x.val();
+    }
+
+    template <typename Number>
+    Number
+    degradation_of(const Number &s, const PlasticityParameters &p)
+    {
+      const Number d = 1. - s;
+      const Number g = p.degradation_a * (d * d * d - d * d) - 2. * d * d * d +
+                       3. * d * d;
+      return (1. - p.residual_stiffness) * g + p.residual_stiffness;
+    }
+
+    template <typename Number>
+    Number
+    hardening_of(const Number &alpha, const PlasticityParameters &p)
+    {
+      return p.initial_yield +
+             (p.saturation_yield - p.initial_yield) *
+               (1. - std::exp(-p.saturation_exponent * alpha)) +
+             p.linear_hardening * alpha;
+    }
+
+    template <typename Number>
+    struct Evaluation
+    {
+      Number                          J, psi_elastic, psi_plus, r;
+      SymmetricTensor<2, dim, Number> tau, Cp_inv;
+      Tensor<2, dim, Number>          P;
+      bool                            yielding;
+    };
+
+    template <typename Number>
+    SymmetricTensor<2, dim, Number>
+    push_forward(const Tensor<2, dim, Number>          &F,
+                 const SymmetricTensor<2, dim, Number> &C)
+    {
+      return symmetrize(F * Tensor<2, dim, Number>(C) * transpose(F));
+    }
+
+    template <typename Number>
+    Evaluation<Number>
+    evaluate(const Tensor<2, dim, Number>  &F,
+             const PlasticHistory          &history_n,
+             const Number                  &alpha,
+             const Number                  &s,
+             const double                   dt,
+             const PlasticityParameters    &p)
+    {
+      const double mu = p.shear_modulus, kappa = p.bulk_modulus;
+      Evaluation<Number> e;
+      e.J                = determinant(F);
+      const Number J23   = std::pow(e.J, -2. / 3.);
+      const Number g_dev = degradation_of(s, p);
+      const Number g_vol = value_of(e.J) > 1. ? g_dev : Number(1.);
+
+      // 1. Trial state and yield check (chi_p from values only).
+      const SymmetricTensor<2, dim, Number> Cp_inv_n(history_n.Cp_inv);
+      const SymmetricTensor<2, dim, Number> b_tr = push_forward(F, Cp_inv_n);
+      const Number mu_g = mu * g_dev;
+      const SymmetricTensor<2, dim, Number> b_bar_tr = J23 * b_tr;
+      const SymmetricTensor<2, dim, Number> tau_dev_tr = mu_g * deviator(b_bar_tr);
+      const Number norm_tr = std::sqrt(tau_dev_tr * tau_dev_tr);
+      e.yielding           = value_of(norm_tr) - std::sqrt(2. / 3.) *
+                                                  hardening_of(history_n.alpha, p) >
+                   0.;
+
+      // 2. Plastic flow from the current alpha of the global field.
+      e.Cp_inv = Cp_inv_n;
+      if (e.yielding &&
+          value_of(alpha) > history_n.alpha)
+        {
+          const Number lambda =
+            std::sqrt(1.5) * (alpha - history_n.alpha) / dt;
+          const Tensor<2, dim, Number> F_inv = invert(F);
+          const Number inverse_norm = 1. / norm_tr;
+          const SymmetricTensor<2, dim, Number> n_tr = inverse_norm * tau_dev_tr;
+          const Number factor = (2. / 3.) * dt * lambda * trace(b_tr);
+          e.Cp_inv -= factor * symmetrize(F_inv * Tensor<2, dim, Number>(n_tr) *
+                                          transpose(F_inv));
+          // Plastic incompressibility: det (C^p)^{-1} = 1.
+          const Number rescale = std::pow(determinant(e.Cp_inv), -1. / 3.);
+          e.Cp_inv = rescale * e.Cp_inv;
+        }
+
+      // 3. Stress and energies from bbar^e.
+      const SymmetricTensor<2, dim, Number> b_bar =
+        J23 * push_forward(F, e.Cp_inv);
+      const Number tr_b = trace(b_bar);
+      const SymmetricTensor<2, dim, Number> tau_dev = mu_g * deviator(b_bar);
+      const Number pressure_part = kappa * g_vol * (e.J * e.J - e.J);
+      e.tau = pressure_part * unit_symmetric_tensor<dim, Number>() + tau_dev;
+      e.P = Tensor<2, dim, Number>(e.tau) * transpose(invert(F));
+      const Number vol = 0.5 * kappa * (e.J - 1.) * (e.J - 1.);
+      const Number dev = 0.5 * mu * (tr_b - 3.);
+      e.psi_elastic    = g_vol * vol + g_dev * dev;
+      e.psi_plus       = (value_of(e.J) > 1. ? vol : Number(0.)) + dev;
+
+      // Local part of (50).
+      e.r = p.viscosity * (alpha - history_n.alpha) / dt;
+      if (e.yielding)
+        e.r += hardening_of(alpha, p) -
+               std::sqrt(1.5) * std::sqrt(tau_dev * tau_dev);
+      return e;
+    }
+  } // namespace
+
+
+
+  double
+  hardening_stress(const double alpha, const PlasticityParameters &p)
+  {
+    return hardening_of(alpha, p);
+  }
+
+
+
+  double
+  degradation(const double s, const PlasticityParameters &p)
+  {
+    return degradation_of(s, p);
+  }
+
+
+
+  PlasticResponse
+  plastic_update(const Tensor<2, dim>       &F,
+                 const PlasticHistory       &history_n,
+                 const double                alpha,
+                 const double                s,
+                 const double                dt,
+                 const PlasticityParameters &parameters,
+                 const bool                  with_tangent)
+  {
+    PlasticResponse response;
+    if (!with_tangent)
+      {
+        const Evaluation<double> e =
+          evaluate<double>(F, history_n, alpha, s, dt, parameters);
+        response.J           = e.J;
+        response.psi_elastic = e.psi_elastic;
+        response.psi_plus    = e.psi_plus;
+        response.tau         = e.tau;
+        response.P           = e.P;
+        response.r           = e.r;
+        response.yielding    = e.yielding;
+        response.updated     = {e.Cp_inv, alpha};
+        return response;
+      }
+
+    // Directions: F_cD -> 3c + D, alpha -> 9, s -> 10.
+    Tensor<2, dim, ADNumber> F_ad;
+    for (unsigned int c = 0; c < dim; ++c)
+      for (unsigned int D = 0; D < dim; ++D)
+        F_ad[c][D] = ADNumber(11, dim * c + D, F[c][D]);
+    const ADNumber alpha_ad(11, 9, alpha), s_ad(11, 10, s);
+    const Evaluation<ADNumber> e =
+      evaluate<ADNumber>(F_ad, history_n, alpha_ad, s_ad, dt, parameters);
+
+    response.J           = e.J.val();
+    response.psi_elastic = e.psi_elastic.val();
+    response.psi_plus    = e.psi_plus.val();
+    response.r           = e.r.val();
+    response.yielding    = e.yielding;
+    response.updated.alpha = alpha;
+    for (unsigned int a = 0; a < dim; ++a)
+      for (unsigned int b = a; b < dim; ++b)
+        {
+          response.tau[a][b]            = e.tau[a][b].val();
+          response.updated.Cp_inv[a][b] = e.Cp_inv[a][b].val();
+        }
+    for (unsigned int a = 0; a < dim; ++a)
+      for (unsigned int B = 0; B < dim; ++B)
+        {
+          response.P[a][B] = e.P[a][B].val();
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int D = 0; D < dim; ++D)
+              response.dP_dF[a][B][c][D] = e.P[a][B].dx(dim * c + D);
+          response.dP_dalpha[a][B] = e.P[a][B].dx(9);
+          response.dP_ds[a][B]    = e.P[a][B].dx(10);
+          response.dr_dF[a][B]    = e.r.dx(dim * a + B);
+        }
+    response.dr_dalpha = e.r.dx(9);
+    response.dr_ds     = e.r.dx(10);
+    return response;
+  }
+} // namespace DuctileContact

@@ -1,0 +1,230 @@
+// Material-point driver of the visco-plastic finite-strain J2 update
+// (model.md section 3; issue #4, item 1), no mesh:
+//  1. the tangents dP/dF, dP/dalpha, dP/ds, dr/dF, dr/dalpha, dr/ds equal
+//     central finite differences (relative 1e-6) in plastic states with
+//     damage s = 0.3 and a prior plastic history;
+//  2. det (C^p)^{-1} = 1 to round-off after plastic steps;
+//  3. uniaxial stress (lateral stretch from tau_yy = 0, alpha from the
+//     local hardening equation r = 0 by Newton with dr/dalpha) with a
+//     nearly rate-independent viscosity: the axial Kirchhoff stress follows
+//     the independent small-strain rate-independent solution
+//     sigma = yhat(eps - sigma/E) within 1 % up to 2 % strain, and the
+//     overstress vanishes linearly with eta_p;
+//  4. unloading from a plastic state is elastic: no yielding, C^p and
+//     alpha unchanged, stress drops with Young's modulus.
+#include <deal.II/base/tensor.h>
+
+#include <ductile_contact/materials/plasticity.h>
+
+#include "tests.h"
+
+#include <random>
+
+using namespace dealii;
+using namespace DuctileContact;
+
+namespace
+{
+  /// One homogeneous uniaxial-stress step: finds lateral stretch and alpha.
+  PlasticResponse
+  uniaxial_step(const double                lambda,
+                const PlasticHistory       &history,
+                const double                dt,
+                const PlasticityParameters &p)
+  {
+    const auto solve_alpha = [&](const Tensor<2, dim> &F) {
+      // Start just above alpha_n: at alpha = alpha_n the flow is switched
+      // off and dr/dalpha lacks the stress relaxation.
+      double          alpha = history.alpha + 1e-12;
+      PlasticResponse r     = plastic_update(F, history, alpha, 0., dt, p, true);
+      if (!r.yielding) // elastic: r = eta_p (alpha - alpha_n)/dt = 0
+        return plastic_update(F, history, history.alpha, 0., dt, p, true);
+      for (unsigned int it = 0; it < 50 && r.yielding; ++it)
+        {
+          alpha = std::max(history.alpha + 1e-12, alpha - r.r / r.dr_dalpha);
+          r     = plastic_update(F, history, alpha, 0., dt, p, true);
+          if (std::abs(r.r) < 1e-14)
+            break;
+        }
+      return r;
+    };
+    double lo = 0.5, hi = 1.5;
+    for (unsigned int i = 0; i < 60; ++i)
+      {
+        const double   mid = 0.5 * (lo + hi);
+        Tensor<2, dim> F;
+        F[0][0] = lambda;
+        F[1][1] = F[2][2] = mid;
+        (solve_alpha(F).tau[1][1] > 0 ? hi : lo) = mid;
+      }
+    Tensor<2, dim> F;
+    F[0][0] = lambda;
+    F[1][1] = F[2][2] = 0.5 * (lo + hi);
+    return solve_alpha(F);
+  }
+
+  /// Small-strain rate-independent reference: sigma = yhat(eps - sigma/E).
+  double
+  reference_stress(const double eps, const PlasticityParameters &p)
+  {
+    const double mu = p.shear_modulus, kappa = p.bulk_modulus;
+    const double E  = 9. * kappa * mu / (3. * kappa + mu);
+    if (E * eps <= p.initial_yield)
+      return E * eps;
+    double lo = p.initial_yield, hi = E * eps;
+    for (unsigned int i = 0; i < 200; ++i)
+      {
+        const double mid = 0.5 * (lo + hi);
+        (hardening_stress(eps - mid / E, p) > mid ? lo : hi) = mid;
+      }
+    return 0.5 * (lo + hi);
+  }
+} // namespace
+
+int
+main()
+{
+  std::ofstream out("output");
+  out << std::setprecision(6);
+  PlasticityParameters p; // mu = 1, kappa = 2.5, y0 = 0.005, y_inf = 0.006
+
+  // 1. and 2.: tangents and incompressibility in random plastic states.
+  {
+    std::mt19937                           gen(7);
+    std::uniform_real_distribution<double> d(-1., 1.);
+    double                                 worst = 0, det_error = 0;
+    unsigned int                           plastic = 0;
+    for (unsigned int sample = 0; sample < 20; ++sample)
+      {
+        PlasticHistory h;
+        Tensor<2, dim> Fp = unit_symmetric_tensor<dim>();
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            Fp[i][j] += 0.01 * d(gen);
+        Fp /= std::cbrt(determinant(Fp));
+        h.Cp_inv = symmetrize(invert(transpose(Fp) * Fp));
+        h.alpha  = 0.01;
+        Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            F[i][j] += 0.03 * d(gen);
+        const double alpha = h.alpha + 0.002 * (1.2 + d(gen));
+        const double s = 0.3, dt = 0.1;
+        const PlasticResponse r = plastic_update(F, h, alpha, s, dt, p, true);
+        if (!r.yielding)
+          continue;
+        ++plastic;
+        det_error = std::max(det_error, std::abs(determinant(r.updated.Cp_inv) - 1.));
+
+        const double eps  = 1e-6;
+        double       diff = 0, norm = 0;
+        const auto   add  = [&](const double fd, const double exact) {
+          diff += (fd - exact) * (fd - exact);
+          norm += exact * exact;
+        };
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int D = 0; D < dim; ++D)
+            {
+              Tensor<2, dim> Fp1 = F, Fm1 = F;
+              Fp1[c][D] += eps;
+              Fm1[c][D] -= eps;
+              const auto rp = plastic_update(Fp1, h, alpha, s, dt, p, false);
+              const auto rm = plastic_update(Fm1, h, alpha, s, dt, p, false);
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int B = 0; B < dim; ++B)
+                  add((rp.P[a][B] - rm.P[a][B]) / (2 * eps), r.dP_dF[a][B][c][D]);
+              add((rp.r - rm.r) / (2 * eps), r.dr_dF[c][D]);
+            }
+        const double ea = 1e-7;
+        const auto   ap = plastic_update(F, h, alpha + ea, s, dt, p, false);
+        const auto   am = plastic_update(F, h, alpha - ea, s, dt, p, false);
+        const auto   sp = plastic_update(F, h, alpha, s + eps, dt, p, false);
+        const auto   sm = plastic_update(F, h, alpha, s - eps, dt, p, false);
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int B = 0; B < dim; ++B)
+            {
+              add((ap.P[a][B] - am.P[a][B]) / (2 * ea), r.dP_dalpha[a][B]);
+              add((sp.P[a][B] - sm.P[a][B]) / (2 * eps), r.dP_ds[a][B]);
+            }
+        add((ap.r - am.r) / (2 * ea), r.dr_dalpha);
+        add((sp.r - sm.r) / (2 * eps), r.dr_ds);
+        worst = std::max(worst, std::sqrt(diff / norm));
+      }
+    out << "plastic samples: " << (plastic >= 10 ? "at least 10" : "too few")
+        << std::endl;
+    out << "tangents equal central differences (1e-6): "
+        << Testing::yes_no(worst < 1e-6) << std::endl;
+    out << "det (C^p)^-1 = 1 to round-off (1e-14): "
+        << Testing::yes_no(det_error < 1e-14) << std::endl;
+    std::cout << "worst tangent error " << worst << ", det error " << det_error
+              << std::endl;
+  }
+
+  // 3. Uniaxial stress, nearly rate independent, against the small-strain
+  // reference; overstress against eta_p.
+  {
+    const double E = 9. * p.bulk_modulus * p.shear_modulus /
+                     (3. * p.bulk_modulus + p.shear_modulus);
+    double overstress[2] = {0, 0};
+    bool   close         = true;
+    for (const unsigned int k : {0u, 1u})
+      {
+        PlasticityParameters q = p;
+        q.viscosity            = (k == 0) ? 1e-5 : 1e-6;
+        PlasticHistory h;
+        const double   dt = 0.01; // 100 steps to 2 % stretch
+        for (unsigned int n = 1; n <= 100; ++n)
+          {
+            const double          lambda = 1. + 0.0002 * n;
+            const PlasticResponse r      = uniaxial_step(lambda, h, dt, q);
+            h                            = r.updated;
+            const double eps   = std::log(lambda);
+            const double sigma = r.tau[0][0];
+            if (k == 1 && n % 25 == 0)
+              {
+                const double ref = reference_stress(eps, q);
+                close = close && std::abs(sigma - ref) < 0.01 * ref;
+                out << "  strain " << std::setprecision(3) << eps
+                    << ": sigma / y0 = " << sigma / q.initial_yield
+                    << std::setprecision(6) << std::endl;
+              }
+            if (n == 100)
+              overstress[k] =
+                std::sqrt(1.5) * std::sqrt(deviator(r.tau) * deviator(r.tau)) -
+                hardening_stress(h.alpha, q);
+          }
+      }
+    out << "uniaxial stress follows the rate-independent reference (1 %): "
+        << Testing::yes_no(close) << std::endl;
+    out << "overstress shrinks with eta_p (ratio 10 +- 1): "
+        << Testing::yes_no(std::abs(overstress[0] / overstress[1] - 10.) < 1.)
+        << std::endl;
+    std::cout << "overstress " << overstress[0] << " " << overstress[1] << " E "
+              << E << std::endl;
+  }
+
+  // 4. Elastic unloading.
+  {
+    PlasticHistory h;
+    PlasticResponse r;
+    for (unsigned int n = 1; n <= 50; ++n)
+      {
+        r = uniaxial_step(1. + 0.0002 * n, h, 0.01, p);
+        h = r.updated;
+      }
+    const PlasticResponse u = uniaxial_step(1. + 0.0002 * 49, h, 0.01, p);
+    const double          E = 9. * p.bulk_modulus * p.shear_modulus /
+                     (3. * p.bulk_modulus + p.shear_modulus);
+    const double slope = (r.tau[0][0] - u.tau[0][0]) / 0.0002;
+    std::cout << "unloading: yielding " << u.yielding << " dalpha "
+              << u.updated.alpha - h.alpha << " dCp "
+              << (u.updated.Cp_inv - h.Cp_inv).norm() << " slope / E "
+              << slope / E << std::endl;
+    const bool   elastic =
+      !u.yielding && u.updated.alpha == h.alpha &&
+      (u.updated.Cp_inv - h.Cp_inv).norm() == 0. &&
+      std::abs(slope - E) < 0.01 * E;
+    out << "unloading is elastic with slope E (1 %): " << Testing::yes_no(elastic)
+        << std::endl;
+  }
+}
