@@ -36,7 +36,7 @@ namespace
       // Start just above alpha_n: at alpha = alpha_n the flow is switched
       // off and dr/dalpha lacks the stress relaxation.
       double          alpha = history.alpha + 1e-12;
-      PlasticResponse r     = plastic_update(F, history, alpha, 0., dt, p, true);
+      PlasticResponse r = plastic_update(F, history, alpha, 0., dt, p, true);
       if (!r.yielding) // elastic: r = eta_p (alpha - alpha_n)/dt = 0
         return plastic_update(F, history, history.alpha, 0., dt, p, true);
       for (unsigned int it = 0; it < 50 && r.yielding; ++it)
@@ -54,7 +54,7 @@ namespace
         const double   mid = 0.5 * (lo + hi);
         Tensor<2, dim> F;
         F[0][0] = lambda;
-        F[1][1] = F[2][2] = mid;
+        F[1][1] = F[2][2]                        = mid;
         (solve_alpha(F).tau[1][1] > 0 ? hi : lo) = mid;
       }
     Tensor<2, dim> F;
@@ -68,13 +68,13 @@ namespace
   reference_stress(const double eps, const PlasticityParameters &p)
   {
     const double mu = p.shear_modulus, kappa = p.bulk_modulus;
-    const double E  = 9. * kappa * mu / (3. * kappa + mu);
+    const double E = 9. * kappa * mu / (3. * kappa + mu);
     if (E * eps <= p.initial_yield)
       return E * eps;
     double lo = p.initial_yield, hi = E * eps;
     for (unsigned int i = 0; i < 200; ++i)
       {
-        const double mid = 0.5 * (lo + hi);
+        const double mid                                     = 0.5 * (lo + hi);
         (hardening_stress(eps - mid / E, p) > mid ? lo : hi) = mid;
       }
     return 0.5 * (lo + hi);
@@ -102,23 +102,24 @@ main()
           for (unsigned int j = 0; j < dim; ++j)
             Fp[i][j] += 0.01 * d(gen);
         Fp /= std::cbrt(determinant(Fp));
-        h.Cp_inv = symmetrize(invert(transpose(Fp) * Fp));
-        h.alpha  = 0.01;
+        h.Cp_inv         = symmetrize(invert(transpose(Fp) * Fp));
+        h.alpha          = 0.01;
         Tensor<2, dim> F = unit_symmetric_tensor<dim>();
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             F[i][j] += 0.03 * d(gen);
-        const double alpha = h.alpha + 0.002 * (1.2 + d(gen));
-        const double s = 0.3, dt = 0.1;
+        const double          alpha = h.alpha + 0.002 * (1.2 + d(gen));
+        const double          s = 0.3, dt = 0.1;
         const PlasticResponse r = plastic_update(F, h, alpha, s, dt, p, true);
         if (!r.yielding)
           continue;
         ++plastic;
-        det_error = std::max(det_error, std::abs(determinant(r.updated.Cp_inv) - 1.));
+        det_error =
+          std::max(det_error, std::abs(determinant(r.updated.Cp_inv) - 1.));
 
         const double eps  = 1e-6;
         double       diff = 0, norm = 0;
-        const auto   add  = [&](const double fd, const double exact) {
+        const auto   add = [&](const double fd, const double exact) {
           diff += (fd - exact) * (fd - exact);
           norm += exact * exact;
         };
@@ -132,7 +133,8 @@ main()
               const auto rm = plastic_update(Fm1, h, alpha, s, dt, p, false);
               for (unsigned int a = 0; a < dim; ++a)
                 for (unsigned int B = 0; B < dim; ++B)
-                  add((rp.P[a][B] - rm.P[a][B]) / (2 * eps), r.dP_dF[a][B][c][D]);
+                  add((rp.P[a][B] - rm.P[a][B]) / (2 * eps),
+                      r.dP_dF[a][B][c][D]);
               add((rp.r - rm.r) / (2 * eps), r.dr_dF[c][D]);
             }
         const double ea = 1e-7;
@@ -178,12 +180,12 @@ main()
             const double          lambda = 1. + 0.0002 * n;
             const PlasticResponse r      = uniaxial_step(lambda, h, dt, q);
             h                            = r.updated;
-            const double eps   = std::log(lambda);
-            const double sigma = r.tau[0][0];
+            const double eps             = std::log(lambda);
+            const double sigma           = r.tau[0][0];
             if (k == 1 && n % 25 == 0)
               {
                 const double ref = reference_stress(eps, q);
-                close = close && std::abs(sigma - ref) < 0.01 * ref;
+                close            = close && std::abs(sigma - ref) < 0.01 * ref;
                 out << "  strain " << std::setprecision(3) << eps
                     << ": sigma / y0 = " << sigma / q.initial_yield
                     << std::setprecision(6) << std::endl;
@@ -205,7 +207,7 @@ main()
 
   // 4. Elastic unloading.
   {
-    PlasticHistory h;
+    PlasticHistory  h;
     PlasticResponse r;
     for (unsigned int n = 1; n <= 50; ++n)
       {
@@ -220,11 +222,10 @@ main()
               << u.updated.alpha - h.alpha << " dCp "
               << (u.updated.Cp_inv - h.Cp_inv).norm() << " slope / E "
               << slope / E << std::endl;
-    const bool   elastic =
-      !u.yielding && u.updated.alpha == h.alpha &&
-      (u.updated.Cp_inv - h.Cp_inv).norm() == 0. &&
-      std::abs(slope - E) < 0.01 * E;
-    out << "unloading is elastic with slope E (1 %): " << Testing::yes_no(elastic)
-        << std::endl;
+    const bool elastic = !u.yielding && u.updated.alpha == h.alpha &&
+                         (u.updated.Cp_inv - h.Cp_inv).norm() == 0. &&
+                         std::abs(slope - E) < 0.01 * E;
+    out << "unloading is elastic with slope E (1 %): "
+        << Testing::yes_no(elastic) << std::endl;
   }
 }

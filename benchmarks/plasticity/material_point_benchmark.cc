@@ -42,7 +42,7 @@ main()
 {
   PlasticityParameters p;
   PlasticHistory       h;
-  h.alpha = 0.01;
+  h.alpha          = 0.01;
   Tensor<2, dim> F = unit_symmetric_tensor<dim>();
   F[0][0] += 0.02;
   F[0][1] += 0.005;
@@ -61,8 +61,14 @@ main()
         // elastic branch: alpha = alpha_n and a small strain
         const double t_el = microseconds(
           [&] {
-            return plastic_update(unit_symmetric_tensor<dim>() + 1e-4 * (F - unit_symmetric_tensor<dim>()),
-                                  h, h.alpha, s, 0.1, p, tangent)
+            return plastic_update(unit_symmetric_tensor<dim>() +
+                                    1e-4 * (F - unit_symmetric_tensor<dim>()),
+                                  h,
+                                  h.alpha,
+                                  s,
+                                  0.1,
+                                  p,
+                                  tangent)
               .psi_elastic;
           },
           n / (tangent ? 10 : 1));
@@ -72,9 +78,11 @@ main()
               .psi_elastic;
           },
           n / (tangent ? 10 : 1));
-        std::cout << "plastic-update(elastic-branch) " << (tangent ? "yes" : "no")
-                  << " " << s << " " << t_el << "\n";
-        std::cout << "plastic-update(plastic-branch) " << (tangent ? "yes" : "no")
-                  << " " << s << " " << t_pl << "\n";
+        std::cout << "plastic-update(elastic-branch) "
+                  << (tangent ? "yes" : "no") << " " << s << " " << t_el
+                  << "\n";
+        std::cout << "plastic-update(plastic-branch) "
+                  << (tangent ? "yes" : "no") << " " << s << " " << t_pl
+                  << "\n";
       }
 }

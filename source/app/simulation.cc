@@ -112,18 +112,20 @@ namespace DuctileContact
     boundary_dofs.clear();
     for (const BoundaryCondition &bc : parameters.boundary_conditions)
       {
+        // Only constrained components report a reaction (record_step).
         std::array<IndexSet, dim> per_component;
         for (unsigned int c = 0; c < dim; ++c)
-          {
-            std::vector<bool> mask(Component::n_components, false);
-            mask[c] = true;
-            per_component[c] =
-              DoFTools::extract_boundary_dofs(discretisation->dof_handler,
-                                              ComponentMask(mask),
-                                              {bc.boundary_id});
-            per_component[c] =
-              per_component[c] & discretisation->locally_owned_dofs;
-          }
+          if (bc.constrained[c])
+            {
+              std::vector<bool> mask(Component::n_components, false);
+              mask[c] = true;
+              per_component[c] =
+                DoFTools::extract_boundary_dofs(discretisation->dof_handler,
+                                                ComponentMask(mask),
+                                                {bc.boundary_id});
+              per_component[c] =
+                per_component[c] & discretisation->locally_owned_dofs;
+            }
         boundary_dofs.push_back(per_component);
       }
 

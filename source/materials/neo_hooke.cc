@@ -48,16 +48,6 @@ namespace DuctileContact
 
 
 
-  SymmetricTensor<4, dim>
-  neo_hooke_spatial_tangent(const Tensor<2, dim> &F,
-                            const double          mu,
-                            const double          kappa)
-  {
-    return spatial_tangent(kinematics(F), mu, kappa);
-  }
-
-
-
   Tensor<4, dim>
   first_elasticity_tensor(const Tensor<2, dim>          &F_inv,
                           const SymmetricTensor<4, dim> &c,

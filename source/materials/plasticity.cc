@@ -28,8 +28,8 @@ namespace DuctileContact
     degradation_of(const Number &s, const PlasticityParameters &p)
     {
       const Number d = 1. - s;
-      const Number g = p.degradation_a * (d * d * d - d * d) - 2. * d * d * d +
-                       3. * d * d;
+      const Number g =
+        p.degradation_a * (d * d * d - d * d) - 2. * d * d * d + 3. * d * d;
       return (1. - p.residual_stiffness) * g + p.residual_stiffness;
     }
 
@@ -62,14 +62,14 @@ namespace DuctileContact
 
     template <typename Number>
     Evaluation<Number>
-    evaluate(const Tensor<2, dim, Number>  &F,
-             const PlasticHistory          &history_n,
-             const Number                  &alpha,
-             const Number                  &s,
-             const double                   dt,
-             const PlasticityParameters    &p)
+    evaluate(const Tensor<2, dim, Number> &F,
+             const PlasticHistory         &history_n,
+             const Number                 &alpha,
+             const Number                 &s,
+             const double                  dt,
+             const PlasticityParameters   &p)
     {
-      const double mu = p.shear_modulus, kappa = p.bulk_modulus;
+      const double       mu = p.shear_modulus, kappa = p.bulk_modulus;
       Evaluation<Number> e;
       e.J                = determinant(F);
       const Number J23   = std::pow(e.J, -2. / 3.);
@@ -79,40 +79,40 @@ namespace DuctileContact
       // 1. Trial state and yield check (chi_p from values only).
       const SymmetricTensor<2, dim, Number> Cp_inv_n(history_n.Cp_inv);
       const SymmetricTensor<2, dim, Number> b_tr = push_forward(F, Cp_inv_n);
-      const Number mu_g = mu * g_dev;
+      const Number                          mu_g = mu * g_dev;
       const SymmetricTensor<2, dim, Number> b_bar_tr = J23 * b_tr;
-      const SymmetricTensor<2, dim, Number> tau_dev_tr = mu_g * deviator(b_bar_tr);
+      const SymmetricTensor<2, dim, Number> tau_dev_tr =
+        mu_g * deviator(b_bar_tr);
       const Number norm_tr = std::sqrt(tau_dev_tr * tau_dev_tr);
-      e.yielding           = value_of(norm_tr) - std::sqrt(2. / 3.) *
-                                                  hardening_of(history_n.alpha, p) >
+      e.yielding           = value_of(norm_tr) -
+                     std::sqrt(2. / 3.) * hardening_of(history_n.alpha, p) >
                    0.;
 
       // 2. Plastic flow from the current alpha of the global field.
       e.Cp_inv = Cp_inv_n;
-      if (e.yielding &&
-          value_of(alpha) > history_n.alpha)
+      if (e.yielding && value_of(alpha) > history_n.alpha)
         {
-          const Number lambda =
-            std::sqrt(1.5) * (alpha - history_n.alpha) / dt;
-          const Tensor<2, dim, Number> F_inv = invert(F);
-          const Number inverse_norm = 1. / norm_tr;
-          const SymmetricTensor<2, dim, Number> n_tr = inverse_norm * tau_dev_tr;
+          const Number lambda = std::sqrt(1.5) * (alpha - history_n.alpha) / dt;
+          const Tensor<2, dim, Number>          F_inv        = invert(F);
+          const Number                          inverse_norm = 1. / norm_tr;
+          const SymmetricTensor<2, dim, Number> n_tr =
+            inverse_norm * tau_dev_tr;
           const Number factor = (2. / 3.) * dt * lambda * trace(b_tr);
           e.Cp_inv -= factor * symmetrize(F_inv * Tensor<2, dim, Number>(n_tr) *
                                           transpose(F_inv));
           // Plastic incompressibility: det (C^p)^{-1} = 1.
           const Number rescale = std::pow(determinant(e.Cp_inv), -1. / 3.);
-          e.Cp_inv = rescale * e.Cp_inv;
+          e.Cp_inv             = rescale * e.Cp_inv;
         }
 
       // 3. Stress and energies from bbar^e.
       const SymmetricTensor<2, dim, Number> b_bar =
         J23 * push_forward(F, e.Cp_inv);
-      const Number tr_b = trace(b_bar);
+      const Number                          tr_b    = trace(b_bar);
       const SymmetricTensor<2, dim, Number> tau_dev = mu_g * deviator(b_bar);
       const Number pressure_part = kappa * g_vol * (e.J * e.J - e.J);
       e.tau = pressure_part * unit_symmetric_tensor<dim, Number>() + tau_dev;
-      e.P = Tensor<2, dim, Number>(e.tau) * transpose(invert(F));
+      e.P   = Tensor<2, dim, Number>(e.tau) * transpose(invert(F));
       const Number vol = 0.5 * kappa * (e.J - 1.) * (e.J - 1.);
       const Number dev = 0.5 * mu * (tr_b - 3.);
       e.psi_elastic    = g_vol * vol + g_dev * dev;
@@ -175,15 +175,15 @@ namespace DuctileContact
     for (unsigned int c = 0; c < dim; ++c)
       for (unsigned int D = 0; D < dim; ++D)
         F_ad[c][D] = ADNumber(11, dim * c + D, F[c][D]);
-    const ADNumber alpha_ad(11, 9, alpha), s_ad(11, 10, s);
+    const ADNumber             alpha_ad(11, 9, alpha), s_ad(11, 10, s);
     const Evaluation<ADNumber> e =
       evaluate<ADNumber>(F_ad, history_n, alpha_ad, s_ad, dt, parameters);
 
-    response.J           = e.J.val();
-    response.psi_elastic = e.psi_elastic.val();
-    response.psi_plus    = e.psi_plus.val();
-    response.r           = e.r.val();
-    response.yielding    = e.yielding;
+    response.J             = e.J.val();
+    response.psi_elastic   = e.psi_elastic.val();
+    response.psi_plus      = e.psi_plus.val();
+    response.r             = e.r.val();
+    response.yielding      = e.yielding;
     response.updated.alpha = alpha;
     for (unsigned int a = 0; a < dim; ++a)
       for (unsigned int b = a; b < dim; ++b)
@@ -199,8 +199,8 @@ namespace DuctileContact
             for (unsigned int D = 0; D < dim; ++D)
               response.dP_dF[a][B][c][D] = e.P[a][B].dx(dim * c + D);
           response.dP_dalpha[a][B] = e.P[a][B].dx(9);
-          response.dP_ds[a][B]    = e.P[a][B].dx(10);
-          response.dr_dF[a][B]    = e.r.dx(dim * a + B);
+          response.dP_ds[a][B]     = e.P[a][B].dx(10);
+          response.dr_dF[a][B]     = e.r.dx(dim * a + B);
         }
     response.dr_dalpha = e.r.dx(9);
     response.dr_ds     = e.r.dx(10);

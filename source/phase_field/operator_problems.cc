@@ -332,26 +332,19 @@ namespace DuctileContact
     result.info.solve_seconds = timer.wall_time();
 
     const QGauss<dim> error_quadrature(degree + 2);
-    Vector<double>    cellwise(tria.n_active_cells());
-    VectorTools::integrate_difference(system.mapping,
-                                      system.dof_handler,
-                                      system.solution,
-                                      exact,
-                                      cellwise,
-                                      error_quadrature,
-                                      VectorTools::L2_norm);
-    result.l2 =
-      VectorTools::compute_global_error(tria, cellwise, VectorTools::L2_norm);
-    VectorTools::integrate_difference(system.mapping,
-                                      system.dof_handler,
-                                      system.solution,
-                                      exact,
-                                      cellwise,
-                                      error_quadrature,
-                                      VectorTools::H1_seminorm);
-    result.h1 = VectorTools::compute_global_error(tria,
-                                                  cellwise,
-                                                  VectorTools::H1_seminorm);
+    const auto        global_error = [&](const VectorTools::NormType norm) {
+      Vector<double> cellwise(tria.n_active_cells());
+      VectorTools::integrate_difference(system.mapping,
+                                        system.dof_handler,
+                                        system.solution,
+                                        exact,
+                                        cellwise,
+                                        error_quadrature,
+                                        norm);
+      return VectorTools::compute_global_error(tria, cellwise, norm);
+    };
+    result.l2 = global_error(VectorTools::L2_norm);
+    result.h1 = global_error(VectorTools::H1_seminorm);
 
     FEValues<dim>               fe_values(system.mapping,
                             system.fe,

@@ -79,7 +79,8 @@ namespace DuctileContact
     std::unique_ptr<SolutionWriter>                              writer;
     Statistics                                                   statistics;
 
-    /// Owned DoFs of each component on each boundary with conditions.
+    /// Owned DoFs of each constrained component on each boundary with
+    /// conditions (empty for the other components).
     std::vector<std::array<dealii::IndexSet, dim>> boundary_dofs;
 
     dealii::TrilinosWrappers::MPI::BlockVector u, u_ghosted, internal_force,

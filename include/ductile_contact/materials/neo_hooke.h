@@ -48,12 +48,6 @@ namespace DuctileContact
             const double                  kappa,
             const bool                    with_tangent);
 
-  /// Spatial Kirchhoff tangent c of neo_hooke() (exposed for unit tests).
-  dealii::SymmetricTensor<4, dim>
-  neo_hooke_spatial_tangent(const dealii::Tensor<2, dim> &F,
-                            const double                  mu,
-                            const double                  kappa);
-
   /// A from the spatial tangent c and tau (see neo_hooke()).
   dealii::Tensor<4, dim>
   first_elasticity_tensor(const dealii::Tensor<2, dim>          &F_inv,

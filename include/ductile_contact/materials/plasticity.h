@@ -14,8 +14,8 @@ namespace DuctileContact
    */
   struct PlasticityParameters
   {
-    double shear_modulus       = 1.;  ///< mu
-    double bulk_modulus        = 2.5; ///< kappa
+    double shear_modulus       = 1.;    ///< mu
+    double bulk_modulus        = 2.5;   ///< kappa
     double initial_yield       = 0.005; ///< y_0
     double saturation_yield    = 0.006; ///< y_inf
     double saturation_exponent = 25.;   ///< eta in (21)
@@ -37,7 +37,8 @@ namespace DuctileContact
   struct PlasticHistory
   {
     /// (C^p)^{-1}, symmetric with determinant 1.
-    dealii::SymmetricTensor<2, dim> Cp_inv = dealii::unit_symmetric_tensor<dim>();
+    dealii::SymmetricTensor<2, dim> Cp_inv =
+      dealii::unit_symmetric_tensor<dim>();
     /// alpha_n
     double alpha = 0.;
   };
@@ -50,12 +51,12 @@ namespace DuctileContact
    */
   struct PlasticResponse
   {
-    double                          J = 1.;
+    double                          J           = 1.;
     double                          psi_elastic = 0.; ///< degraded Psi^e (16)
-    double                          psi_plus    = 0.; ///< crack driver psi^+ (27)
+    double                          psi_plus = 0.; ///< crack driver psi^+ (27)
     dealii::SymmetricTensor<2, dim> tau;
     dealii::Tensor<2, dim>          P;
-    double                          r = 0.;
+    double                          r        = 0.;
     bool                            yielding = false; ///< chi_p
     PlasticHistory                  updated;
 
@@ -81,11 +82,11 @@ namespace DuctileContact
    * their values, as in Newton's method).
    */
   PlasticResponse
-  plastic_update(const dealii::Tensor<2, dim>      &F,
-                 const PlasticHistory              &history_n,
-                 const double                       alpha,
-                 const double                       s,
-                 const double                       dt,
-                 const PlasticityParameters        &parameters,
-                 const bool                         with_tangent);
+  plastic_update(const dealii::Tensor<2, dim> &F,
+                 const PlasticHistory         &history_n,
+                 const double                  alpha,
+                 const double                  s,
+                 const double                  dt,
+                 const PlasticityParameters   &parameters,
+                 const bool                    with_tangent);
 } // namespace DuctileContact
