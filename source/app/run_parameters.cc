@@ -92,6 +92,7 @@ namespace DuctileContact
 
     load_stepping.declare(prm);
     newton.declare(prm);
+    coupling.declare(prm);
     linear_solver.declare(prm);
     output.declare(prm);
   }
@@ -150,6 +151,7 @@ namespace DuctileContact
       bc.check();
     load_stepping.check();
     newton.check();
+    coupling.check();
     linear_solver.check();
     output.check();
   }

@@ -91,6 +91,7 @@ namespace DuctileContact
       linear_solver->setup();
     }
     newton = std::make_unique<NewtonSolver>(parameters.newton,
+                                            parameters.coupling,
                                             *discretisation,
                                             *assembler,
                                             *linear_solver,
@@ -105,9 +106,12 @@ namespace DuctileContact
 
     for (auto *v : {&u, &internal_force, &previous_internal_force})
       v->reinit(discretisation->owned_partitioning, comm);
-    u_ghosted.reinit(discretisation->owned_partitioning,
-                     discretisation->relevant_partitioning,
-                     comm);
+    for (auto *v : {&u_ghosted, &old_solution})
+      v->reinit(discretisation->owned_partitioning,
+                discretisation->relevant_partitioning,
+                comm);
+    history.reinit(discretisation->dof_handler,
+                   discretisation->quadrature[0].size());
 
     boundary_dofs.clear();
     for (const BoundaryCondition &bc : parameters.boundary_conditions)
@@ -247,11 +251,33 @@ namespace DuctileContact
                              : integrals[b].traction_force[d]);
           }
       }
-    const double stored_energy = report.info.stored_energy;
+    const double stored_energy = committed.stored_energy;
     statistics.add("stored_energy", stored_energy);
     statistics.add("external_work", external_work);
-    statistics.add("energy_residual", external_work - stored_energy);
+    bool plastic = false, cracking = false;
+    for (const BodyParameters &b : parameters.bodies)
+      {
+        plastic |= b.plasticity;
+        cracking |= b.fracture;
+      }
+    if (plastic)
+      {
+        statistics.add("plastic_work", plastic_work);
+        statistics.add("hardening_energy", committed.hardening_energy);
+      }
+    if (cracking)
+      {
+        statistics.add("fracture_energy", committed.fracture_energy);
+        statistics.add("fracture_viscous_work", fracture_viscous_work);
+        statistics.add("max_s", max_phase_field);
+        statistics.add("min_s_change", min_phase_field_change);
+      }
+    statistics.add("energy_residual",
+                   external_work - stored_energy - plastic_work -
+                     committed.fracture_energy - fracture_viscous_work);
     statistics.add("newton_iterations", report.iterations);
+    if (cracking)
+      statistics.add("staggered_iterations", report.staggered_iterations);
     statistics.add("newton_rate", report.convergence_rate);
     statistics.add("linear_iterations", report.linear_iterations);
     statistics.add("cutbacks", cutbacks);
@@ -267,6 +293,23 @@ namespace DuctileContact
     statistics.add("wall_time", MPI_Wtime() - wall_start);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       statistics.write();
+  }
+
+
+
+  AssemblyInfo
+  Simulation::commit(const StepData &step_data)
+  {
+    TimerOutput::Scope scope(timer, "commit history");
+    QuadratureHistory  updated = history;
+    u_ghosted                  = u;
+    const AssemblyInfo info    = assembler->assemble(
+      u_ghosted,
+      step_data,
+      discretisation->hanging_node_constraints,
+      {nullptr, nullptr, nullptr, nullptr, &updated, &cell_quantities});
+    history = std::move(updated);
+    return info;
   }
 
 
@@ -287,19 +330,21 @@ namespace DuctileContact
     unsigned int step     = 0;
     unsigned int interval = parameters.output.interval;
 
-    u         = 0;
-    u_ghosted = u;
+    u            = 0;
+    old_solution = u;
+    committed    = commit({0., ls.time_step, &old_solution, &history});
     record_step(0, 0., 0., NewtonReport(), 0);
     if (interval > 0)
-      writer->write(0, 0., u_ghosted);
+      writer->write(0, 0., u_ghosted, cell_quantities);
 
     unsigned int cutbacks = 0;
     while (t < T - eps)
       {
         const double                             dt_try = std::min(dt, T - t);
         const TrilinosWrappers::MPI::BlockVector u_old  = u;
-        const NewtonReport                       report =
-          newton->solve(t + dt_try, u, internal_force);
+        const StepData step_data{t + dt_try, dt_try, &old_solution, &history};
+        const NewtonReport report =
+          newton->solve_step(step_data, u, internal_force);
 
         if (!report.converged)
           {
@@ -331,13 +376,24 @@ namespace DuctileContact
             0.5 * (internal_force * du + previous_internal_force * du);
         }
         previous_internal_force = internal_force;
-        u_ghosted               = u;
+        committed               = commit(step_data);
+        plastic_work += committed.plastic_work_increment;
+        fracture_viscous_work += committed.fracture_viscous_work_increment;
+        if (discretisation->dofs_per_block[Block::phase_field] > 0)
+          {
+            TrilinosWrappers::MPI::Vector ds = u.block(Block::phase_field);
+            ds -= u_old.block(Block::phase_field);
+            min_phase_field_change = ds.min();
+            max_phase_field        = u.block(Block::phase_field).max();
+          }
+        old_solution = u;
+        u_ghosted    = u;
         record_step(step, t, dt_try, report, cutbacks);
         const bool last = (t >= T - eps);
         if (interval > 0 && (step % interval == 0 || last))
           {
             TimerOutput::Scope scope(timer, "output");
-            writer->write(step, t, u_ghosted);
+            writer->write(step, t, u_ghosted, cell_quantities);
           }
 
         const double elapsed = MPI_Wtime() - wall_start;
@@ -349,6 +405,13 @@ namespace DuctileContact
         if (std::isfinite(report.convergence_rate))
           pcout << " rate " << std::fixed << std::setprecision(2)
                 << report.convergence_rate << std::defaultfloat
+                << std::setprecision(6);
+        if (discretisation->dofs_per_block[Block::phase_field] > 0)
+          pcout << (parameters.coupling.strategy == "staggered"
+                      ? "  alternations " +
+                          std::to_string(report.staggered_iterations)
+                      : std::string())
+                << "  max s " << std::setprecision(3) << max_phase_field
                 << std::setprecision(6);
         pcout << "  min J " << std::setprecision(4) << report.info.min_J
               << std::setprecision(6) << "  " << std::fixed

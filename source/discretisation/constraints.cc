@@ -37,7 +37,8 @@ namespace DuctileContact
     const std::deque<BoundaryCondition>      &boundary_conditions,
     const double                              t,
     const TrilinosWrappers::MPI::BlockVector *u,
-    AffineConstraints<double>                &constraints)
+    AffineConstraints<double>                &constraints,
+    const std::array<bool, Block::n_blocks>  &frozen)
   {
     constraints.clear();
     constraints.reinit(discretisation.locally_relevant_dofs);
@@ -52,16 +53,16 @@ namespace DuctileContact
             constraints.set_inhomogeneity(dof, value - (*u)(dof));
         }
 
-    // No equations for alpha and s yet: hold them at zero.
-    for (const unsigned int b : {Block::hardening, Block::phase_field})
-      {
-        types::global_dof_index offset = 0;
-        for (unsigned int c = 0; c < b; ++c)
-          offset += discretisation.dofs_per_block[c];
-        for (const auto i : discretisation.relevant_partitioning[b])
-          if (!constraints.is_constrained(offset + i))
-            constraints.add_line(offset + i);
-      }
+    for (unsigned int b = 0; b < Block::n_blocks; ++b)
+      if (frozen[b])
+        {
+          types::global_dof_index offset = 0;
+          for (unsigned int c = 0; c < b; ++c)
+            offset += discretisation.dofs_per_block[c];
+          for (const auto i : discretisation.relevant_partitioning[b])
+            if (!constraints.is_constrained(offset + i))
+              constraints.add_line(offset + i);
+        }
     constraints.close();
   }
 } // namespace DuctileContact

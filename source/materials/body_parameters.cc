@@ -15,6 +15,19 @@ namespace DuctileContact
 
 
 
+  PlasticityParameters
+  BodyParameters::material() const
+  {
+    PlasticityParameters p = plastic;
+    p.shear_modulus        = shear_modulus;
+    p.bulk_modulus         = bulk_modulus;
+    p.degradation_a        = crack.degradation_a;
+    p.residual_stiffness   = crack.residual_stiffness;
+    return p;
+  }
+
+
+
   void
   BodyParameters::declare(ParameterHandler &prm)
   {
@@ -36,13 +49,75 @@ namespace DuctileContact
     prm.add_parameter(
       "Plasticity",
       plasticity,
-      "Whether this body yields (carries the hardening field alpha). Not "
-      "available yet: the plasticity equations are issue #4.");
+      "Whether this body yields: it then carries the hardening field alpha "
+      "and the visco-plastic J2 model of model.md section 3 (parameters in "
+      "the subsection Plasticity). Without it alpha does not exist here.");
     prm.add_parameter(
       "Fracture",
       fracture,
-      "Whether this body can crack (carries the phase field s). Not "
-      "available yet: the phase-field equations are issue #3.");
+      "Whether this body can crack: it then carries the phase field s of "
+      "model.md section 4 (parameters in the subsection Fracture). Without "
+      "it s does not exist here.");
+
+    prm.enter_subsection("Plasticity");
+    prm.add_parameter("Initial yield stress",
+                      plastic.initial_yield,
+                      "y_0 of the hardening law (21) [Pa].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Saturation yield stress",
+                      plastic.saturation_yield,
+                      "y_inf of (21) [Pa]; at least y_0.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Saturation exponent",
+                      plastic.saturation_exponent,
+                      "eta of (21) [-].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Linear hardening",
+                      plastic.linear_hardening,
+                      "h of (21) [Pa].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Viscosity",
+                      plastic.viscosity,
+                      "eta_p of (34) and (50) [Pa times pseudo time]; "
+                      "positive. Small values approach rate independence.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Length scale",
+                      plastic_length_scale,
+                      "l_p of the gradient term y_0 l_p^2 |grad alpha|^2/2 "
+                      "of (20) [m]; 0 gives local plasticity.",
+                      Patterns::Double(0.));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Fracture");
+    prm.add_parameter("Critical energy release rate",
+                      crack.critical_energy_release_rate,
+                      "g_c of (51) [J/m^2].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Length scale",
+                      crack.length_scale,
+                      "l_f of the crack functional (3) [m].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Viscosity",
+                      crack.viscosity,
+                      "eta_f of (51) [J/m^3 times pseudo time]; 0 gives the "
+                      "rate-independent limit.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Degradation parameter",
+                      crack.degradation_a,
+                      "a_g of g(s) (model.md section 2); 2 gives "
+                      "g(s) = (1 - s)^2. Between 0 and 3 (g must decrease).",
+                      Patterns::Double(0.));
+    prm.add_parameter("Residual stiffness",
+                      crack.residual_stiffness,
+                      "k of g_k(s) = (1 - k) g(s) + k [-].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Interior penalty",
+                      crack.interior_penalty,
+                      "gamma_IP of the C0 interior-penalty face terms of the "
+                      "bi-Laplacian; 0 selects the default 1.5 p (p + 1) "
+                      "(see phase_field/c0ip.h for why not p (p + 1)).",
+                      Patterns::Double(0.));
+    prm.leave_subsection();
     prm.leave_subsection();
   }
 
@@ -52,24 +127,52 @@ namespace DuctileContact
   BodyParameters::check() const
   {
     const std::string prefix = subsection() + "/";
+    const auto value = [](const double x) { return Utilities::to_string(x); };
     check_input(shear_modulus > 0.,
                 prefix + "Shear modulus",
-                Utilities::to_string(shear_modulus),
+                value(shear_modulus),
                 "it must be positive");
     check_input(bulk_modulus > 0.,
                 prefix + "Bulk modulus",
-                Utilities::to_string(bulk_modulus),
+                value(bulk_modulus),
                 "it must be positive");
-    // The FE layout already carries alpha and s (see Discretisation), but
-    // their equations do not exist yet: refuse rather than run a body whose
-    // plasticity or fracture would silently do nothing.
-    check_input(!plasticity,
-                prefix + "Plasticity",
-                "true",
-                "plasticity is not implemented yet (issue #4); use false");
-    check_input(!fracture,
-                prefix + "Fracture",
-                "true",
-                "fracture is not implemented yet (issue #3); use false");
+    if (plasticity)
+      {
+        const std::string p = prefix + "Plasticity/";
+        check_input(plastic.initial_yield > 0.,
+                    p + "Initial yield stress",
+                    value(plastic.initial_yield),
+                    "it must be positive");
+        check_input(plastic.saturation_yield >= plastic.initial_yield,
+                    p + "Saturation yield stress",
+                    value(plastic.saturation_yield),
+                    "it must be at least the initial yield stress " +
+                      value(plastic.initial_yield));
+        check_input(plastic.viscosity > 0.,
+                    p + "Viscosity",
+                    value(plastic.viscosity),
+                    "it must be positive (the hardening equation (50) is "
+                    "viscous; choose it small for rate independence)");
+      }
+    if (fracture)
+      {
+        const std::string f = prefix + "Fracture/";
+        check_input(crack.critical_energy_release_rate > 0.,
+                    f + "Critical energy release rate",
+                    value(crack.critical_energy_release_rate),
+                    "it must be positive");
+        check_input(crack.length_scale > 0.,
+                    f + "Length scale",
+                    value(crack.length_scale),
+                    "it must be positive");
+        check_input(crack.degradation_a <= 3.,
+                    f + "Degradation parameter",
+                    value(crack.degradation_a),
+                    "0 <= a_g <= 3 (g(s) must decrease from 1 to 0)");
+        check_input(crack.residual_stiffness < 1.,
+                    f + "Residual stiffness",
+                    value(crack.residual_stiffness),
+                    "0 <= k < 1");
+      }
   }
 } // namespace DuctileContact

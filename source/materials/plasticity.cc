@@ -90,7 +90,7 @@ namespace DuctileContact
 
       // 2. Plastic flow from the current alpha of the global field.
       e.Cp_inv = Cp_inv_n;
-      if (e.yielding && value_of(alpha) > history_n.alpha)
+      if (e.yielding && value_of(alpha) >= history_n.alpha)
         {
           const Number lambda = std::sqrt(1.5) * (alpha - history_n.alpha) / dt;
           const Tensor<2, dim, Number>          F_inv        = invert(F);
@@ -198,12 +198,14 @@ namespace DuctileContact
           for (unsigned int c = 0; c < dim; ++c)
             for (unsigned int D = 0; D < dim; ++D)
               response.dP_dF[a][B][c][D] = e.P[a][B].dx(dim * c + D);
-          response.dP_dalpha[a][B] = e.P[a][B].dx(9);
-          response.dP_ds[a][B]     = e.P[a][B].dx(10);
-          response.dr_dF[a][B]     = e.r.dx(dim * a + B);
+          response.dP_dalpha[a][B]    = e.P[a][B].dx(9);
+          response.dP_ds[a][B]        = e.P[a][B].dx(10);
+          response.dr_dF[a][B]        = e.r.dx(dim * a + B);
+          response.dpsi_plus_dF[a][B] = e.psi_plus.dx(dim * a + B);
         }
-    response.dr_dalpha = e.r.dx(9);
-    response.dr_ds     = e.r.dx(10);
+    response.dpsi_plus_dalpha = e.psi_plus.dx(9);
+    response.dr_dalpha        = e.r.dx(9);
+    response.dr_ds            = e.r.dx(10);
     return response;
   }
 } // namespace DuctileContact

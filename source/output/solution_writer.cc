@@ -2,9 +2,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/numerics/data_out.h>
-#include <deal.II/physics/elasticity/standard_tensors.h>
 
-#include <ductile_contact/materials/neo_hooke.h>
 #include <ductile_contact/output/solution_writer.h>
 
 #include <fstream>
@@ -28,46 +26,16 @@ namespace DuctileContact
   void
   SolutionWriter::write(const unsigned int                        step,
                         const double                              time,
-                        const TrilinosWrappers::MPI::BlockVector &u)
+                        const TrilinosWrappers::MPI::BlockVector &u,
+                        const CellQuantities                     &cells)
   {
     const auto   &tria = discretisation.triangulation;
-    Vector<float> equivalent_stress(tria.n_active_cells()),
-      mean_stress(tria.n_active_cells()), jacobian(tria.n_active_cells()),
-      body(tria.n_active_cells()), rank(tria.n_active_cells());
-
-    hp::FEValues<dim>           hp_fe_values(discretisation.mapping,
-                                   discretisation.fe_collection,
-                                   discretisation.quadrature,
-                                   update_gradients | update_JxW_values);
-    std::vector<Tensor<2, dim>> grad_u;
-    for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
+    Vector<float> body(tria.n_active_cells()), rank(tria.n_active_cells());
+    for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          hp_fe_values.reinit(cell);
-          const FEValues<dim> &fe_values = hp_fe_values.get_present_fe_values();
-          const BodyParameters &b        = *bodies.at(cell->material_id());
-          grad_u.resize(fe_values.n_quadrature_points);
-          fe_values[discretisation.displacement].get_function_gradients(u,
-                                                                        grad_u);
-          double volume = 0, vm = 0, p = 0, J = 0;
-          for (unsigned int q = 0; q < grad_u.size(); ++q)
-            {
-              const Tensor<2, dim> F =
-                Physics::Elasticity::StandardTensors<dim>::I + grad_u[q];
-              const MaterialResponse m =
-                neo_hooke(F, b.shear_modulus, b.bulk_modulus, false);
-              const double JxW = fe_values.JxW(q);
-              volume += JxW;
-              vm += von_mises(m.tau) * JxW;
-              p += trace(m.tau) / 3. * JxW;
-              J += m.J * JxW;
-            }
-          const auto i         = cell->active_cell_index();
-          equivalent_stress[i] = vm / volume;
-          mean_stress[i]       = p / volume;
-          jacobian[i]          = J / volume;
-          body[i]              = cell->material_id();
-          rank[i]              = tria.locally_owned_subdomain();
+          body[cell->active_cell_index()] = cell->material_id();
+          rank[cell->active_cell_index()] = tria.locally_owned_subdomain();
         }
 
     DataOut<dim> data_out;
@@ -95,9 +63,12 @@ namespace DuctileContact
                              names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
-    data_out.add_data_vector(equivalent_stress, "von_mises_kirchhoff");
-    data_out.add_data_vector(mean_stress, "mean_kirchhoff_stress");
-    data_out.add_data_vector(jacobian, "J");
+    data_out.add_data_vector(cells.von_mises, "von_mises_kirchhoff");
+    data_out.add_data_vector(cells.mean_stress, "mean_kirchhoff_stress");
+    data_out.add_data_vector(cells.J, "J");
+    if (discretisation.dofs_per_block[Block::phase_field] > 0)
+      data_out.add_data_vector(cells.crack_driving_force,
+                               "crack_driving_force");
     data_out.add_data_vector(body, "body");
     data_out.add_data_vector(rank, "mpi_rank");
     data_out.build_patches(discretisation.degree);

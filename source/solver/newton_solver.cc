@@ -16,6 +16,7 @@ namespace DuctileContact
 
   NewtonSolver::NewtonSolver(
     const NewtonParameters              &parameters,
+    const CouplingParameters            &coupling,
     const Discretisation                &discretisation,
     const SystemAssembler               &assembler,
     LinearSolver                        &linear_solver,
@@ -24,6 +25,7 @@ namespace DuctileContact
     ConditionalOStream                  &verbose_out,
     TimerOutput                         &timer)
       : parameters(parameters)
+      , coupling(coupling)
       , discretisation(discretisation)
       , assembler(assembler)
       , linear_solver(linear_solver)
@@ -54,11 +56,32 @@ namespace DuctileContact
       discretisation.owned_partitioning,
       discretisation.relevant_partitioning,
       comm);
-    DoFTools::make_sparsity_pattern(discretisation.dof_handler,
-                                    sp,
-                                    constraints,
-                                    false,
-                                    Utilities::MPI::this_mpi_process(comm));
+    if (discretisation.dofs_per_block[Block::phase_field] == 0)
+      DoFTools::make_sparsity_pattern(discretisation.dof_handler,
+                                      sp,
+                                      constraints,
+                                      false,
+                                      Utilities::MPI::this_mpi_process(comm));
+    else
+      {
+        // The C0IP terms couple s across interior faces, nothing else does.
+        Table<2, DoFTools::Coupling> cell_coupling(Component::n_components,
+                                                   Component::n_components);
+        Table<2, DoFTools::Coupling> face_coupling(Component::n_components,
+                                                   Component::n_components);
+        cell_coupling.fill(DoFTools::always);
+        face_coupling.fill(DoFTools::none);
+        face_coupling(Component::phase_field, Component::phase_field) =
+          DoFTools::always;
+        DoFTools::make_flux_sparsity_pattern(discretisation.dof_handler,
+                                             sp,
+                                             constraints,
+                                             false,
+                                             cell_coupling,
+                                             face_coupling,
+                                             Utilities::MPI::this_mpi_process(
+                                               comm));
+      }
     sp.compress();
     tangent.reinit(sp);
 
@@ -72,9 +95,64 @@ namespace DuctileContact
 
 
   NewtonReport
-  NewtonSolver::solve(const double                        t,
-                      TrilinosWrappers::MPI::BlockVector &u,
-                      TrilinosWrappers::MPI::BlockVector &internal_force)
+  NewtonSolver::solve_step(const StepData                     &step,
+                           TrilinosWrappers::MPI::BlockVector &u,
+                           TrilinosWrappers::MPI::BlockVector &internal_force)
+  {
+    const bool has_s = discretisation.dofs_per_block[Block::phase_field] > 0;
+    if (coupling.strategy == "monolithic" || !has_s)
+      return solve(step, u, internal_force, {{false, false, false}});
+
+    // Alternate minimisation: (u, alpha) with s fixed, then s with (u,
+    // alpha) fixed. Each sub-solve checks its fields before iterating, so
+    // a sub-solve that needs no iteration shows that the state it starts
+    // from meets the tolerances in every block: the coupled step is done.
+    NewtonReport total;
+    for (unsigned int k = 1; k <= coupling.max_staggered_iterations; ++k)
+      {
+        total.staggered_iterations = k;
+        for (const bool mechanics : {true, false})
+          {
+            const NewtonReport r =
+              solve(step,
+                    u,
+                    internal_force,
+                    mechanics ? std::array<bool, 3>{{false, false, true}}
+                              : std::array<bool, 3>{{true, true, false}});
+            total.iterations += r.iterations;
+            total.linear_iterations += r.linear_iterations;
+            total.info = r.info;
+            if (!r.converged)
+              {
+                total.failure = (mechanics ? "mechanics sub-step: "
+                                           : "phase-field sub-step: ") +
+                                r.failure;
+                return total;
+              }
+            if (r.iterations == 0 && (k > 1 || !mechanics))
+              {
+                total.converged        = true;
+                total.convergence_rate = r.convergence_rate;
+                return total;
+              }
+            total.convergence_rate = r.convergence_rate;
+          }
+        verbose_out << "      staggered iteration " << k << " done"
+                    << std::endl;
+      }
+    total.failure = "no staggered convergence in " +
+                    std::to_string(coupling.max_staggered_iterations) +
+                    " alternations";
+    return total;
+  }
+
+
+
+  NewtonReport
+  NewtonSolver::solve(const StepData                          &step,
+                      TrilinosWrappers::MPI::BlockVector      &u,
+                      TrilinosWrappers::MPI::BlockVector      &internal_force,
+                      const std::array<bool, Block::n_blocks> &frozen)
   {
     NewtonReport              report;
     AffineConstraints<double> constraints;
@@ -87,63 +165,119 @@ namespace DuctileContact
       return Utilities::MPI::max(largest, comm) > 0.;
     };
 
-    // Records ||R|| of a state whose Dirichlet data are reached and returns
-    // whether it is converged; if so, also the observed order from the last
-    // three residuals above the round-off floor (eps times the size of the
-    // terms summed into f_int, see AssemblyInfo::force_magnitude): a residual
-    // at that floor says nothing about the rate, so the rate stays undefined
-    // (nan) when fewer than three residuals lie above it.
-    const auto converged =
-      [&](const double r, const double scale, const AssemblyInfo &info) {
-        report.residual_norms.push_back(r);
-        if (r > parameters.relative_tolerance * scale +
-                  parameters.absolute_tolerance * force_scale)
+    // Norms of the residual blocks (frozen blocks are constrained, so
+    // their entries are zero) and the merit combining them in force units
+    // with the scales of the state at the start of the iteration.
+    using Norms            = std::array<double, Block::n_blocks>;
+    const auto block_norms = [&]() {
+      Norms n;
+      for (unsigned int b = 0; b < Block::n_blocks; ++b)
+        n[b] = residual.block(b).l2_norm();
+      return n;
+    };
+    const auto merit = [](const Norms &n, const AssemblyInfo &scales) {
+      double sum = n[0] * n[0];
+      for (unsigned int b = 1; b < Block::n_blocks; ++b)
+        if (scales.residual_scale[b] > 0.)
+          {
+            const double weighted =
+              n[b] * scales.residual_scale[0] / scales.residual_scale[b];
+            sum += weighted * weighted;
+          }
+      return std::sqrt(sum);
+    };
+    const auto within_tolerance =
+      [&](const Norms &n, const double f_int_norm, const AssemblyInfo &info) {
+        if (n[0] > parameters.relative_tolerance * f_int_norm +
+                     parameters.absolute_tolerance * force_scale)
           return false;
-        report.converged = true;
-        const double floor =
-          std::numeric_limits<double>::epsilon() * info.force_magnitude;
-        const auto &h = report.residual_norms;
-        std::size_t n = h.size();
-        while (n >= 3 && h[n - 1] <= floor)
-          --n;
-        if (n >= 3 && h[n - 1] > 0 && h[n - 2] > 0 && h[n - 3] > 0 &&
-            h[n - 2] != h[n - 3])
-          report.convergence_rate =
-            std::log(h[n - 1] / h[n - 2]) / std::log(h[n - 2] / h[n - 3]);
+        for (unsigned int b = 1; b < Block::n_blocks; ++b)
+          if (n[b] > parameters.relative_tolerance * info.residual_scale[b])
+            return false;
         return true;
       };
 
-    const auto print = [&](const unsigned int it,
-                           const double       r,
-                           const double       scale,
-                           const bool         pending) {
+    // Records the merit of a state whose Dirichlet data are reached and
+    // returns whether it is converged; if so, also the observed order from
+    // the last three merits above the round-off floor (eps times the size
+    // of the terms summed into f_int, see AssemblyInfo::force_magnitude): a
+    // residual at that floor says nothing about the rate, so the rate stays
+    // undefined (nan) when fewer than three residuals lie above it.
+    const auto converged = [&](const double        m,
+                               const Norms        &n,
+                               const double        f_int_norm,
+                               const AssemblyInfo &info) {
+      report.residual_norms.push_back(m);
+      if (!within_tolerance(n, f_int_norm, info))
+        return false;
+      report.converged = true;
+      const double floor =
+        std::numeric_limits<double>::epsilon() * info.force_magnitude;
+      const auto &h = report.residual_norms;
+      std::size_t k = h.size();
+      while (k >= 3 && h[k - 1] <= floor)
+        --k;
+      if (k >= 3 && h[k - 1] > 0 && h[k - 2] > 0 && h[k - 3] > 0 &&
+          h[k - 2] != h[k - 3])
+        report.convergence_rate =
+          std::log(h[k - 1] / h[k - 2]) / std::log(h[k - 2] / h[k - 3]);
+      return true;
+    };
+
+    const bool coupled = discretisation.dofs_per_block[Block::hardening] +
+                           discretisation.dofs_per_block[Block::phase_field] >
+                         0;
+    const auto print = [&](const unsigned int  it,
+                           const double        m,
+                           const Norms        &n,
+                           const double        scale,
+                           const AssemblyInfo &info,
+                           const bool          pending) {
       verbose_out << "      Newton " << std::setw(2) << it
-                  << ": |R| = " << std::scientific << std::setprecision(3) << r
-                  << ", |R|/|f_int| = " << (scale > 0 ? r / scale : 0.)
-                  << (pending ? ", Dirichlet data pending" : "")
+                  << ": |R| = " << std::scientific << std::setprecision(3) << m
+                  << ", |R|/|f_int| = " << (scale > 0 ? m / scale : 0.);
+      if (coupled)
+        {
+          const char *names[] = {"u", "alpha", "s"};
+          verbose_out << " (";
+          for (unsigned int b = 0; b < Block::n_blocks; ++b)
+            if (!frozen[b] && discretisation.dofs_per_block[b] > 0)
+              verbose_out << (b == 0 ? "" : " ") << names[b] << " "
+                          << n[b] /
+                               std::max(b == 0 ? scale : info.residual_scale[b],
+                                        1e-300);
+          verbose_out << ")";
+        }
+      verbose_out << (pending ? ", Dirichlet data pending" : "")
                   << std::defaultfloat << std::endl;
     };
 
     for (unsigned int it = 0;; ++it)
       {
         u_ghosted = u;
-        make_newton_constraints(
-          discretisation, boundary_conditions, t, &u_ghosted, constraints);
+        make_newton_constraints(discretisation,
+                                boundary_conditions,
+                                step.t,
+                                &u_ghosted,
+                                constraints,
+                                frozen);
         const bool pending = dirichlet_pending();
 
         {
           TimerOutput::Scope scope(timer, "assembly");
           report.info = assembler.assemble(
             u_ghosted,
-            t,
+            step,
             constraints,
             {&tangent, &newton_rhs, &residual, &internal_force});
         }
-        const double r     = residual.l2_norm();
-        const double scale = internal_force.l2_norm();
-        report.iterations  = it;
+        const AssemblyInfo scales = report.info;
+        const Norms        n      = block_norms();
+        const double       r      = merit(n, scales);
+        const double       scale  = internal_force.block(0).l2_norm();
+        report.iterations         = it;
         if (it == 0)
-          print(it, r, scale, pending);
+          print(it, r, n, scale, scales, pending);
         if (!std::isfinite(r))
           {
             report.failure = "residual is not finite";
@@ -151,7 +285,7 @@ namespace DuctileContact
           }
         // From the second iteration on, convergence is decided right after
         // the line search; only the start of a step is checked here.
-        if (it == 0 && !pending && converged(r, scale, report.info))
+        if (it == 0 && !pending && converged(r, n, scale, report.info))
           return report;
 
         unsigned int n_linear = 0;
@@ -170,38 +304,40 @@ namespace DuctileContact
         report.linear_iterations += n_linear;
 
         // Backtracking: shorten while an element inverts or, once the
-        // Dirichlet data are reached, while ||R|| does not decrease. The
-        // residual of the accepted state also decides convergence, so a
+        // Dirichlet data are reached, while the merit does not decrease.
+        // The residual of the accepted state also decides convergence, so a
         // converged step never assembles a tangent it does not use.
-        double       step     = 1.;
-        bool         accepted = false;
+        double       step_length = 1.;
+        bool         accepted    = false;
         double       trial_r = 0, trial_scale = 0;
+        Norms        trial_n{};
         AssemblyInfo trial_info;
         for (unsigned int ls = 0; ls <= parameters.max_line_search_steps;
-             ++ls, step *= 0.5)
+             ++ls, step_length *= 0.5)
           {
             TrilinosWrappers::MPI::BlockVector trial = u;
-            trial.add(step, delta);
+            trial.add(step_length, delta);
             u_ghosted = trial;
             {
               TimerOutput::Scope scope(timer, "assembly (line search)");
               trial_info = assembler.assemble(
                 u_ghosted,
-                t,
+                step,
                 constraints,
                 {nullptr, nullptr, &residual, &internal_force});
-              trial_r     = residual.l2_norm();
-              trial_scale = internal_force.l2_norm();
+              trial_n     = block_norms();
+              trial_r     = merit(trial_n, scales);
+              trial_scale = internal_force.block(0).l2_norm();
             }
             const bool decreases = pending || !parameters.line_search ||
-                                   trial_r <= (1. - 1e-4 * step) * r;
+                                   trial_r <= (1. - 1e-4 * step_length) * r;
             if (!trial_info.inverted && std::isfinite(trial_r) && decreases)
               {
                 u        = trial;
                 accepted = true;
                 break;
               }
-            verbose_out << "        line search: step " << step
+            verbose_out << "        line search: step " << step_length
                         << (trial_info.inverted ? " inverts an element"
                                                 : " does not reduce |R|")
                         << std::endl;
@@ -212,14 +348,16 @@ namespace DuctileContact
             return report;
           }
         verbose_out << "        linear iterations " << n_linear
-                    << (step < 1 ? ", step length " + std::to_string(step)
-                                 : std::string())
+                    << (step_length < 1
+                          ? ", step length " + std::to_string(step_length)
+                          : std::string())
                     << std::endl;
 
-        const bool still_pending = pending && step < 1.;
-        print(it + 1, trial_r, trial_scale, still_pending);
+        const bool still_pending = pending && step_length < 1.;
+        print(it + 1, trial_r, trial_n, trial_scale, trial_info, still_pending);
         report.iterations = it + 1;
-        if (!still_pending && converged(trial_r, trial_scale, trial_info))
+        if (!still_pending &&
+            converged(trial_r, trial_n, trial_scale, trial_info))
           {
             report.info = trial_info;
             return report;

@@ -1,16 +1,52 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe_interface_values.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/physics/elasticity/standard_tensors.h>
 
+#include <ductile_contact/materials/body_material.h>
+#include <ductile_contact/materials/degradation.h>
 #include <ductile_contact/materials/neo_hooke.h>
+#include <ductile_contact/phase_field/c0ip.h>
 #include <ductile_contact/solver/system_assembler.h>
+
+#include <cmath>
 
 namespace DuctileContact
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// int_0^alpha yhat(a) da for the saturation law (21).
+    double
+    integrated_hardening(const double alpha, const PlasticityParameters &p)
+    {
+      const double eta = p.saturation_exponent;
+      const double saturation =
+        eta > 0. ? alpha - (1. - std::exp(-eta * alpha)) / eta : 0.;
+      return p.initial_yield * alpha +
+             (p.saturation_yield - p.initial_yield) * saturation +
+             0.5 * p.linear_hardening * alpha * alpha;
+    }
+
+    /// The coefficients of g_c gamma for a body that cracks.
+    C0IPCoefficients
+    crack_coefficients(const BodyParameters &body, const unsigned int degree)
+    {
+      C0IPCoefficients c = C0IPCoefficients::crack_functional(
+        body.crack.length_scale,
+        body.crack.critical_energy_release_rate,
+        degree);
+      if (body.crack.interior_penalty > 0.)
+        c.penalty = body.crack.interior_penalty;
+      return c;
+    }
+  } // namespace
+
+
 
   SystemAssembler::SystemAssembler(
     const Discretisation                                       &discretisation,
@@ -26,7 +62,7 @@ namespace DuctileContact
 
   AssemblyInfo
   SystemAssembler::assemble(const TrilinosWrappers::MPI::BlockVector &u,
-                            const double                              t,
+                            const StepData                           &step,
                             const AffineConstraints<double> &constraints,
                             const AssemblyTargets           &targets) const
   {
@@ -37,6 +73,11 @@ namespace DuctileContact
          {targets.newton_rhs, targets.residual, targets.internal_force})
       if (v)
         *v = 0;
+    CellQuantities *cq = targets.cell_quantities;
+    if (cq)
+      for (auto *v :
+           {&cq->von_mises, &cq->mean_stress, &cq->J, &cq->crack_driving_force})
+        v->reinit(discretisation.triangulation.n_active_cells());
 
     // Traction boundaries, looked up per face.
     std::map<types::boundary_id, const BoundaryCondition *> tractions;
@@ -44,10 +85,17 @@ namespace DuctileContact
       if (bc.has_traction)
         tractions[bc.boundary_id] = &bc;
 
-    hp::FEValues<dim>     hp_fe_values(discretisation.mapping,
-                                   discretisation.fe_collection,
-                                   discretisation.quadrature,
-                                   update_gradients | update_JxW_values);
+    // Elastic cells need gradients only; cells with alpha or s also values
+    // and (for the bi-Laplacian) hessians.
+    hp::FEValues<dim>     hp_elastic(discretisation.mapping,
+                                 discretisation.fe_collection,
+                                 discretisation.quadrature,
+                                 update_gradients | update_JxW_values);
+    hp::FEValues<dim>     hp_coupled(discretisation.mapping,
+                                 discretisation.fe_collection,
+                                 discretisation.quadrature,
+                                 update_values | update_gradients |
+                                   update_hessians | update_JxW_values);
     hp::FEFaceValues<dim> hp_face_values(discretisation.mapping,
                                          discretisation.fe_collection,
                                          discretisation.face_quadrature,
@@ -55,13 +103,21 @@ namespace DuctileContact
                                            update_quadrature_points |
                                            update_JxW_values);
 
-    FullMatrix<double>                   cell_matrix;
+    FullMatrix<double>                   cell_matrix, c0ip_matrix;
     Vector<double>                       cell_f_int, cell_rhs, cell_magnitude;
+    Vector<double>                       cell_scale_alpha, cell_scale_s;
     std::vector<types::global_dof_index> dof_indices;
     std::vector<Tensor<2, dim>>          grad_u;
-    std::vector<unsigned int>            u_dofs, u_component;
+    std::vector<double>                  alpha, s, s_old;
+    std::vector<Tensor<1, dim>>          grad_alpha;
+    std::vector<unsigned int>            u_dofs, u_component, a_dofs, s_dofs;
     std::vector<Tensor<1, dim>>          shape_grad;
     std::vector<Tensor<2, dim>>          grad_times_A; // w_i[c][D]
+    std::vector<double>                  a_value, s_value;
+    std::vector<Tensor<1, dim>>          a_grad;
+
+    const PointHistory                default_history;
+    std::vector<const PointHistory *> history_n;
 
     AssemblyInfo info;
     info.min_J = std::numeric_limits<double>::max();
@@ -69,22 +125,34 @@ namespace DuctileContact
     for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          hp_fe_values.reinit(cell);
-          const FEValues<dim> &fe_values = hp_fe_values.get_present_fe_values();
-          const FiniteElement<dim> &fe   = cell->get_fe();
-          const unsigned int        n_dofs = fe.n_dofs_per_cell();
-          const unsigned int        n_q    = fe_values.n_quadrature_points;
-          const BodyParameters     &body   = *bodies.at(cell->material_id());
+          const unsigned int fe_index  = cell->active_fe_index();
+          const bool         has_alpha = fe_index & 1;
+          const bool         has_s     = fe_index & 2;
+          hp::FEValues<dim> &hp_values =
+            (has_alpha || has_s) ? hp_coupled : hp_elastic;
+          hp_values.reinit(cell);
+          const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
+          const FiniteElement<dim>   &fe = cell->get_fe();
+          const unsigned int          n_dofs  = fe.n_dofs_per_cell();
+          const unsigned int          n_q     = fe_values.n_quadrature_points;
+          const BodyParameters       &body    = *bodies.at(cell->material_id());
+          const PlasticityParameters  plastic = body.material();
+          const DegradationParameters degradation{
+            body.crack.degradation_a, body.crack.residual_stiffness};
 
           cell_matrix.reinit(n_dofs, n_dofs);
           cell_f_int.reinit(n_dofs);
           cell_magnitude.reinit(n_dofs);
           cell_rhs.reinit(n_dofs);
+          cell_scale_alpha.reinit(n_dofs);
+          cell_scale_s.reinit(n_dofs);
           dof_indices.resize(n_dofs);
           cell->get_dof_indices(dof_indices);
 
           u_dofs.clear();
           u_component.clear();
+          a_dofs.clear();
+          s_dofs.clear();
           for (unsigned int i = 0; i < n_dofs; ++i)
             {
               const unsigned int c = fe.system_to_component_index(i).first;
@@ -93,15 +161,48 @@ namespace DuctileContact
                   u_dofs.push_back(i);
                   u_component.push_back(c);
                 }
+              else if (c == Component::hardening)
+                a_dofs.push_back(i);
+              else
+                s_dofs.push_back(i);
             }
-          const unsigned int n_u = u_dofs.size();
+          const unsigned int n_u = u_dofs.size(), n_a = a_dofs.size(),
+                             n_s = s_dofs.size();
           shape_grad.resize(n_u);
           grad_times_A.resize(n_u);
+          a_value.resize(n_a);
+          a_grad.resize(n_a);
+          s_value.resize(n_s);
 
           grad_u.resize(n_q);
           fe_values[discretisation.displacement].get_function_gradients(u,
                                                                         grad_u);
+          alpha.assign(n_q, 0.);
+          grad_alpha.assign(n_q, Tensor<1, dim>());
+          s.assign(n_q, 0.);
+          s_old.assign(n_q, 0.);
+          if (has_alpha)
+            {
+              fe_values[discretisation.hardening].get_function_values(u, alpha);
+              fe_values[discretisation.hardening].get_function_gradients(
+                u, grad_alpha);
+            }
+          if (has_s)
+            {
+              fe_values[discretisation.phase_field].get_function_values(u, s);
+              if (step.old_solution)
+                fe_values[discretisation.phase_field].get_function_values(
+                  *step.old_solution, s_old);
+            }
+          history_n.assign(n_q, &default_history);
+          if (step.history && (has_alpha || has_s))
+            for (unsigned int q = 0; q < n_q; ++q)
+              history_n[q] = (*step.history)(cell) + q;
+          PointHistory *history_new = (targets.history && (has_alpha || has_s))
+                                        ? (*targets.history)(cell)
+                                        : nullptr;
 
+          double volume = 0, vm = 0, mean = 0, mean_J = 0, driver = 0;
           for (unsigned int q = 0; q < n_q; ++q)
             {
               const Tensor<2, dim> F =
@@ -113,13 +214,21 @@ namespace DuctileContact
                   info.inverted = true;
                   continue;
                 }
-              const MaterialResponse m   = neo_hooke(F,
-                                                   body.shear_modulus,
-                                                   body.bulk_modulus,
-                                                   with_tangent);
-              const double           JxW = fe_values.JxW(q);
-              info.stored_energy += m.psi * JxW;
+              const PointResponse m   = evaluate_material(body,
+                                                        F,
+                                                        history_n[q]->plastic,
+                                                        alpha[q],
+                                                        s[q],
+                                                        step.dt,
+                                                        with_tangent);
+              const double        JxW = fe_values.JxW(q);
+              info.stored_energy += m.psi_elastic * JxW;
+              volume += JxW;
+              vm += von_mises(m.tau) * JxW;
+              mean += trace(m.tau) / 3. * JxW;
+              mean_J += m.J * JxW;
 
+              // Displacement rows: int P : Grad du.
               for (unsigned int k = 0; k < n_u; ++k)
                 {
                   shape_grad[k]       = fe_values.shape_grad(u_dofs[k], q);
@@ -137,7 +246,7 @@ namespace DuctileContact
                         {
                           double sum = 0;
                           for (unsigned int B = 0; B < dim; ++B)
-                            sum += shape_grad[k][B] * m.A[a][B][c][D];
+                            sum += shape_grad[k][B] * m.dP_dF[a][B][c][D];
                           grad_times_A[k][c][D] = sum * JxW;
                         }
                 }
@@ -146,9 +255,150 @@ namespace DuctileContact
                   for (unsigned int l = 0; l < n_u; ++l)
                     cell_matrix(u_dofs[k], u_dofs[l]) +=
                       grad_times_A[k][u_component[l]] * shape_grad[l];
+
+              for (unsigned int k = 0; k < n_a; ++k)
+                {
+                  a_value[k] = fe_values.shape_value(a_dofs[k], q);
+                  a_grad[k]  = fe_values.shape_grad(a_dofs[k], q);
+                }
+              for (unsigned int k = 0; k < n_s; ++k)
+                s_value[k] = fe_values.shape_value(s_dofs[k], q);
+
+              // Hardening rows, (50).
+              if (has_alpha)
+                {
+                  const double alpha_n = history_n[q]->plastic.alpha;
+                  const double l_p     = body.plastic_length_scale;
+                  const double gradient_coefficient =
+                    m.yielding ? plastic.initial_yield * l_p * l_p : 0.;
+                  info.hardening_energy +=
+                    (integrated_hardening(alpha[q], plastic) +
+                     0.5 * plastic.initial_yield * l_p * l_p *
+                       grad_alpha[q].norm_square()) *
+                    JxW;
+                  if (m.yielding)
+                    info.plastic_work_increment += std::sqrt(1.5) *
+                                                   deviator(m.tau).norm() *
+                                                   (alpha[q] - alpha_n) * JxW;
+                  for (unsigned int k = 0; k < n_a; ++k)
+                    {
+                      const unsigned int i = a_dofs[k];
+                      cell_f_int(i) +=
+                        (m.r * a_value[k] +
+                         gradient_coefficient * (a_grad[k] * grad_alpha[q])) *
+                        JxW;
+                      cell_scale_alpha(i) +=
+                        plastic.initial_yield * a_value[k] * JxW;
+                      if (!with_tangent)
+                        continue;
+                      for (unsigned int l = 0; l < n_u; ++l)
+                        cell_matrix(i, u_dofs[l]) +=
+                          a_value[k] *
+                          (m.dr_dF[u_component[l]] * shape_grad[l]) * JxW;
+                      for (unsigned int l = 0; l < n_a; ++l)
+                        cell_matrix(i, a_dofs[l]) +=
+                          (m.dr_dalpha * a_value[k] * a_value[l] +
+                           gradient_coefficient * (a_grad[k] * a_grad[l])) *
+                          JxW;
+                      for (unsigned int l = 0; l < n_s; ++l)
+                        cell_matrix(i, s_dofs[l]) +=
+                          m.dr_ds * a_value[k] * s_value[l] * JxW;
+                    }
+                  if (with_tangent)
+                    for (unsigned int k = 0; k < n_u; ++k)
+                      for (unsigned int l = 0; l < n_a; ++l)
+                        cell_matrix(u_dofs[k], a_dofs[l]) +=
+                          (m.dP_dalpha[u_component[k]] * shape_grad[k]) *
+                          a_value[l] * JxW;
+                }
+
+              // Phase-field rows, (51) without a(s, ds) (added below).
+              if (has_s)
+                {
+                  const double eta_f   = body.crack.viscosity;
+                  const double psi_max = history_n[q]->psi_plus_max;
+                  const bool   loading = m.psi_plus > psi_max;
+                  const double psi_H   = loading ? m.psi_plus : psi_max;
+                  const double g1 = degradation_derivative(s[q], degradation);
+                  const double g2 =
+                    degradation_second_derivative(s[q], degradation);
+                  const double rate = (s[q] - s_old[q]) / step.dt;
+                  driver += -g1 * psi_H * JxW;
+                  info.fracture_viscous_work_increment +=
+                    eta_f * rate * rate * step.dt * JxW;
+                  if (history_new)
+                    history_new[q].psi_plus_max = psi_H;
+                  const double scale = body.crack.critical_energy_release_rate /
+                                       (2. * body.crack.length_scale);
+                  for (unsigned int k = 0; k < n_s; ++k)
+                    {
+                      const unsigned int i = s_dofs[k];
+                      cell_f_int(i) +=
+                        (eta_f * rate + g1 * psi_H) * s_value[k] * JxW;
+                      cell_scale_s(i) += scale * s_value[k] * JxW;
+                      if (!with_tangent)
+                        continue;
+                      for (unsigned int l = 0; l < n_s; ++l)
+                        cell_matrix(i, s_dofs[l]) +=
+                          (eta_f / step.dt + g2 * psi_H) * s_value[k] *
+                          s_value[l] * JxW;
+                      if (loading)
+                        {
+                          for (unsigned int l = 0; l < n_u; ++l)
+                            cell_matrix(i, u_dofs[l]) +=
+                              g1 * s_value[k] *
+                              (m.dpsi_plus_dF[u_component[l]] * shape_grad[l]) *
+                              JxW;
+                          for (unsigned int l = 0; l < n_a; ++l)
+                            cell_matrix(i, a_dofs[l]) +=
+                              g1 * m.dpsi_plus_dalpha * s_value[k] *
+                              a_value[l] * JxW;
+                        }
+                    }
+                  if (with_tangent)
+                    for (unsigned int k = 0; k < n_u; ++k)
+                      for (unsigned int l = 0; l < n_s; ++l)
+                        cell_matrix(u_dofs[k], s_dofs[l]) +=
+                          (m.dP_ds[u_component[k]] * shape_grad[k]) *
+                          s_value[l] * JxW;
+                }
+              if (history_new && has_alpha)
+                history_new[q].plastic = m.updated;
+            }
+
+          // The crack functional's cell terms a_K(s, ds): linear in s.
+          if (has_s)
+            {
+              c0ip_matrix.reinit(n_dofs, n_dofs);
+              add_c0ip_cell_terms(fe_values,
+                                  discretisation.phase_field,
+                                  crack_coefficients(body,
+                                                     discretisation.degree),
+                                  c0ip_matrix);
+              for (unsigned int k = 0; k < n_s; ++k)
+                {
+                  double sum = 0;
+                  for (unsigned int l = 0; l < n_s; ++l)
+                    sum += c0ip_matrix(s_dofs[k], s_dofs[l]) *
+                           u(dof_indices[s_dofs[l]]);
+                  cell_f_int(s_dofs[k]) += sum;
+                  info.fracture_energy += 0.5 * u(dof_indices[s_dofs[k]]) * sum;
+                }
+              if (with_tangent)
+                cell_matrix.add(1., c0ip_matrix);
             }
 
           info.force_magnitude += cell_magnitude.norm_sqr();
+          info.residual_scale[Block::hardening] += cell_scale_alpha.norm_sqr();
+          info.residual_scale[Block::phase_field] += cell_scale_s.norm_sqr();
+          if (cq && volume > 0.)
+            {
+              const auto i               = cell->active_cell_index();
+              cq->von_mises[i]           = vm / volume;
+              cq->mean_stress[i]         = mean / volume;
+              cq->J[i]                   = mean_J / volume;
+              cq->crack_driving_force[i] = driver / volume;
+            }
 
           // R = f_int - f_ext; the Newton right-hand side is -R.
           for (unsigned int i = 0; i < n_dofs; ++i)
@@ -167,7 +417,7 @@ namespace DuctileContact
                   for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
                     {
                       const Tensor<1, dim> T =
-                        it->second->traction_at(fv.quadrature_point(q), t);
+                        it->second->traction_at(fv.quadrature_point(q), step.t);
                       for (unsigned int k = 0; k < n_u; ++k)
                         cell_rhs(u_dofs[k]) += fv.shape_value(u_dofs[k], q) *
                                                T[u_component[k]] * fv.JxW(q);
@@ -199,6 +449,9 @@ namespace DuctileContact
               cell_f_int, dof_indices, *targets.internal_force);
         }
 
+    if (discretisation.dofs_per_block[Block::phase_field] > 0)
+      assemble_faces(u, constraints, targets, info);
+
     if (targets.tangent)
       targets.tangent->compress(VectorOperation::add);
     for (auto *v :
@@ -209,9 +462,117 @@ namespace DuctileContact
     const MPI_Comm comm = discretisation.dof_handler.get_communicator();
     info.inverted       = Utilities::MPI::max(info.inverted ? 1 : 0, comm) > 0;
     info.min_J          = Utilities::MPI::min(info.min_J, comm);
-    info.stored_energy  = Utilities::MPI::sum(info.stored_energy, comm);
-    info.force_magnitude =
-      std::sqrt(Utilities::MPI::sum(info.force_magnitude, comm));
+    std::vector<double> sums{info.stored_energy,
+                             info.hardening_energy,
+                             info.fracture_energy,
+                             info.plastic_work_increment,
+                             info.fracture_viscous_work_increment,
+                             info.force_magnitude,
+                             info.residual_scale[Block::hardening],
+                             info.residual_scale[Block::phase_field]};
+    Utilities::MPI::sum(sums, comm, sums);
+    info.stored_energy                       = sums[0];
+    info.hardening_energy                    = sums[1];
+    info.fracture_energy                     = sums[2];
+    info.plastic_work_increment              = sums[3];
+    info.fracture_viscous_work_increment     = sums[4];
+    info.force_magnitude                     = std::sqrt(sums[5]);
+    info.residual_scale[Block::displacement] = info.force_magnitude;
+    info.residual_scale[Block::hardening]    = std::sqrt(sums[6]);
+    info.residual_scale[Block::phase_field]  = std::sqrt(sums[7]);
     return info;
+  }
+
+
+
+  void
+  SystemAssembler::assemble_faces(const TrilinosWrappers::MPI::BlockVector &u,
+                                  const AffineConstraints<double> &constraints,
+                                  const AssemblyTargets           &targets,
+                                  AssemblyInfo                    &info) const
+  {
+    // The s block starts after u and alpha in the global numbering.
+    const types::global_dof_index first_s =
+      discretisation.dofs_per_block[Block::displacement] +
+      discretisation.dofs_per_block[Block::hardening];
+
+    FullMatrix<double>                   face_matrix, s_matrix;
+    Vector<double>                       s_values, s_f_int, s_rhs;
+    std::vector<unsigned int>            s_local;
+    std::vector<types::global_dof_index> s_indices;
+
+    // FEInterfaceValues of deal.II 9.4 is not hp-aware: one object per
+    // element that carries s, each used on the faces between two such cells.
+    for (unsigned int fe_index = 0;
+         fe_index < discretisation.fe_collection.size();
+         ++fe_index)
+      {
+        if (!(fe_index & 2))
+          continue;
+        FEInterfaceValues<dim> fiv(discretisation.mapping[0],
+                                   discretisation.fe_collection[fe_index],
+                                   discretisation.face_quadrature[fe_index],
+                                   update_gradients | update_hessians |
+                                     update_normal_vectors | update_JxW_values);
+        for_each_interior_face(
+          discretisation.dof_handler,
+          fiv,
+          [&](const FEInterfaceValues<dim> &fiv, const double h_inverse) {
+            const auto           &cell = fiv.get_fe_face_values(0).get_cell();
+            const BodyParameters &body = *bodies.at(cell->material_id());
+            const unsigned int    n    = fiv.n_current_interface_dofs();
+            face_matrix.reinit(n, n);
+            add_c0ip_face_terms(fiv,
+                                discretisation.phase_field,
+                                crack_coefficients(body, discretisation.degree),
+                                h_inverse,
+                                face_matrix);
+
+            // Only the s DoFs carry face terms: keep the matrix to them,
+            // the sparsity pattern couples nothing else across faces.
+            const auto indices = fiv.get_interface_dof_indices();
+            s_local.clear();
+            for (unsigned int i = 0; i < n; ++i)
+              if (indices[i] >= first_s)
+                s_local.push_back(i);
+            const unsigned int m = s_local.size();
+            s_matrix.reinit(m, m);
+            s_values.reinit(m);
+            s_indices.resize(m);
+            for (unsigned int k = 0; k < m; ++k)
+              {
+                s_indices[k] = indices[s_local[k]];
+                s_values(k)  = u(s_indices[k]);
+                for (unsigned int l = 0; l < m; ++l)
+                  s_matrix(k, l) = face_matrix(s_local[k], s_local[l]);
+              }
+            s_f_int.reinit(m);
+            s_matrix.vmult(s_f_int, s_values);
+            info.fracture_energy += 0.5 * (s_values * s_f_int);
+
+            s_rhs = s_f_int;
+            s_rhs *= -1.;
+            if (targets.tangent)
+              constraints.distribute_local_to_global(s_matrix,
+                                                     s_rhs,
+                                                     s_indices,
+                                                     *targets.tangent,
+                                                     *targets.newton_rhs);
+            else if (targets.newton_rhs)
+              constraints.distribute_local_to_global(s_rhs,
+                                                     s_indices,
+                                                     *targets.newton_rhs);
+            if (targets.residual)
+              constraints.distribute_local_to_global(s_f_int,
+                                                     s_indices,
+                                                     *targets.residual);
+            if (targets.internal_force)
+              discretisation.hanging_node_constraints
+                .distribute_local_to_global(s_f_int,
+                                            s_indices,
+                                            *targets.internal_force);
+          },
+          fe_index);
+      }
   }
 } // namespace DuctileContact

@@ -6,6 +6,7 @@
 #include <ductile_contact/materials/body_parameters.h>
 #include <ductile_contact/mesh/mesh_parameters.h>
 #include <ductile_contact/output/output_parameters.h>
+#include <ductile_contact/solver/coupling_parameters.h>
 #include <ductile_contact/solver/solver_parameters.h>
 
 #include <deque>
@@ -31,6 +32,7 @@ namespace DuctileContact
     std::deque<BoundaryCondition> boundary_conditions;
     LoadSteppingParameters        load_stepping;
     NewtonParameters              newton;
+    CouplingParameters            coupling;
     LinearSolverParameters        linear_solver;
     OutputParameters              output;
 

@@ -9,6 +9,8 @@
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/output/statistics.h>
 #include <ductile_contact/output/tee_stream.h>
+#include <ductile_contact/solver/quadrature_history.h>
+#include <ductile_contact/solver/system_assembler.h>
 
 #include <map>
 #include <memory>
@@ -16,7 +18,6 @@
 
 namespace DuctileContact
 {
-  class SystemAssembler;
   class LinearSolver;
   class NewtonSolver;
   struct NewtonReport;
@@ -24,10 +25,14 @@ namespace DuctileContact
 
   /**
    * One quasi-static run: mesh, discretisation, and the load-step loop with
-   * cut-back (model.md section 6). Per accepted step it records reactions,
-   * mean boundary displacements, stored energy, external work (trapezoidal
+   * cut-back (model.md section 6). An accepted step commits the quadrature-
+   * point history (a failed attempt leaves none). Per accepted step it
+   * records reactions, mean boundary displacements, the energies (elastic
+   * Psi^e, plastic work W_p and hardening energy, fracture energy g_c int
+   * gamma, viscous phase-field dissipation D_f), external work (trapezoidal
    * rule, W += 1/2 (f_n + f_n+1) . (u_n+1 - u_n)) and the energy-balance
-   * residual W_ext - int Psi, and writes the statistics table and output.
+   * residual W_ext - Psi^e - W_p - g_c int gamma - D_f, and writes the
+   * statistics table and output.
    * Reaction forces are sums of f_int (condensed with the hanging-node
    * constraints) over the DoFs a boundary constrains.
    */
@@ -52,6 +57,10 @@ namespace DuctileContact
                 const double        dt,
                 const NewtonReport &report,
                 const unsigned int  cutbacks);
+    /// Stores the history of the accepted state u (step @p step_data) and
+    /// returns its energies; also refreshes the output cell data.
+    AssemblyInfo
+    commit(const StepData &step_data);
     /// Area-weighted mean displacement and integrated traction per
     /// boundary with conditions.
     struct BoundaryIntegrals
@@ -84,8 +93,16 @@ namespace DuctileContact
     std::vector<std::array<dealii::IndexSet, dim>> boundary_dofs;
 
     dealii::TrilinosWrappers::MPI::BlockVector u, u_ghosted, internal_force,
-      previous_internal_force;
-    double external_work = 0.;
-    double wall_start    = 0.;
+      previous_internal_force, old_solution;
+    QuadratureHistory history;
+    CellQuantities    cell_quantities;
+    AssemblyInfo      committed;
+    double            external_work         = 0.;
+    double            plastic_work          = 0.;
+    double            fracture_viscous_work = 0.;
+    /// min over s DoFs of s_n+1 - s_n of the last step (irreversibility).
+    double min_phase_field_change = 0.;
+    double max_phase_field        = 0.;
+    double wall_start             = 0.;
   };
 } // namespace DuctileContact

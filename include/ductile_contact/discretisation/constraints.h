@@ -6,6 +6,7 @@
 #include <ductile_contact/discretisation/boundary_condition.h>
 #include <ductile_contact/discretisation/discretisation.h>
 
+#include <array>
 #include <deque>
 
 namespace DuctileContact
@@ -15,8 +16,9 @@ namespace DuctileContact
    * every Dirichlet DoF the update that moves the current displacement to
    * the prescribed value, delta = ubar(t) - u. When @p u is nullptr the
    * Dirichlet lines are homogeneous (same structure; used for the sparsity
-   * pattern). The alpha and s DoFs are fixed at zero: their equations come
-   * with the plasticity and phase-field issues.
+   * pattern). The DoFs of every block marked in @p frozen keep their
+   * values (homogeneous lines): the staggered scheme solves one group of
+   * fields with the others fixed.
    */
   void
   make_newton_constraints(
@@ -24,5 +26,6 @@ namespace DuctileContact
     const std::deque<BoundaryCondition>              &boundary_conditions,
     const double                                      t,
     const dealii::TrilinosWrappers::MPI::BlockVector *u,
-    dealii::AffineConstraints<double>                &constraints);
+    dealii::AffineConstraints<double>                &constraints,
+    const std::array<bool, Block::n_blocks> &frozen = {{false, false, false}});
 } // namespace DuctileContact

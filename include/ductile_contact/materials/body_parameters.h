@@ -3,16 +3,40 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <ductile_contact/materials/plasticity.h>
+
 #include <string>
 
 namespace DuctileContact
 {
   /**
+   * Crack phase-field parameters of a body (model.md section 4, (3) and
+   * (51)), subsection `Body <id>/Fracture`. SI units.
+   */
+  struct FractureParameters
+  {
+    /// g_c: critical energy release rate [J/m^2].
+    double critical_energy_release_rate = 2.7e3;
+    /// l_f: regularisation length of gamma (3) [m].
+    double length_scale = 7.5e-6;
+    /// eta_f: viscosity of (51) [J/m^3 times pseudo time].
+    double viscosity = 0.;
+    /// a_g of the degradation g(s); 2 gives g = (1 - s)^2.
+    double degradation_a = 2.;
+    /// k of g_k(s) = (1 - k) g(s) + k.
+    double residual_stiffness = 1.e-8;
+    /// gamma_IP of the C0IP face terms; 0 selects 1.5 p (p + 1).
+    double interior_penalty = 0.;
+  };
+
+  /**
    * One body of a scene: the cells with a given material_id, its material
    * parameters and the physics it carries. Subsection `Body <material id>`.
    *
-   * Elastic law: compressible neo-Hooke, model.md (16) at s = 0 with shear
-   * modulus mu and bulk modulus kappa [Pa].
+   * Elastic law: compressible neo-Hooke, model.md (16) with shear modulus
+   * mu and bulk modulus kappa [Pa]; with `Fracture` degraded by g_k(s) with
+   * the volumetric/deviatoric split (17); with `Plasticity` the visco-
+   * plastic J2 model of model.md section 3 with the hardening field alpha.
    */
   struct BodyParameters
   {
@@ -26,10 +50,22 @@ namespace DuctileContact
     /// Whether the body carries the crack phase field s (fracture).
     bool fracture = false;
 
+    /// Hardening law (21) and viscosity (34); the moduli and degradation
+    /// members are copied from this body by material().
+    PlasticityParameters plastic{80.e9, 160.e9, 95.e6, 110.e6, 25.4, 0., 1.e6};
+    /// l_p of the gradient term of (20)/(50) [m].
+    double plastic_length_scale = 0.;
+
+    FractureParameters crack;
+
+    /// The plasticity parameters with this body's moduli and degradation.
+    PlasticityParameters
+    material() const;
+
     void
     declare(dealii::ParameterHandler &prm);
 
-    /// Throws InputError for invalid or not yet supported values.
+    /// Throws InputError for invalid values.
     void
     check() const;
 

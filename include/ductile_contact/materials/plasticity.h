@@ -65,6 +65,8 @@ namespace DuctileContact
     dealii::Tensor<2, dim> dP_dalpha, dP_ds;
     dealii::Tensor<2, dim> dr_dF;
     double                 dr_dalpha = 0., dr_ds = 0.;
+    dealii::Tensor<2, dim> dpsi_plus_dF;
+    double                 dpsi_plus_dalpha = 0.;
   };
 
   /**
@@ -77,9 +79,11 @@ namespace DuctileContact
    * finally tau = kappa g_vol(s) (J^2 - J) I + mu g_dev(s) dev[bbar^e].
    *
    * The tangents with respect to F, alpha and s are exact: forward-mode
-   * automatic differentiation (Sacado SFad with 11 directions) of the same
+   * automatic differentiation (Sacado DFad with 11 directions) of the same
    * code (the yield switch chi_p and the clamp of lambda_p are fixed at
-   * their values, as in Newton's method).
+   * their values, as in Newton's method). At alpha = alpha_n on a yielding
+   * point the flow branch is taken (lambda_p = 0): its derivative is the
+   * one-sided one into alpha > alpha_n, the direction Newton must go.
    */
   PlasticResponse
   plastic_update(const dealii::Tensor<2, dim> &F,

@@ -4,6 +4,7 @@
 
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/materials/body_parameters.h>
+#include <ductile_contact/solver/system_assembler.h>
 
 #include <map>
 #include <string>
@@ -16,8 +17,9 @@ namespace DuctileContact
    * Graphical output: results/solution-NNNNN.pvtu (one .vtu per rank) and
    * the time series results/solution.pvd. Point data: displacement (for
    * Warp By Vector), alpha, s. Cell data (averages over the quadrature
-   * points): von Mises equivalent and mean of the Kirchhoff stress [Pa], J,
-   * body (material id) and MPI rank.
+   * points, from SystemAssembler's CellQuantities): von Mises equivalent and
+   * mean of the Kirchhoff stress [Pa], J, the crack driving force H =
+   * -g'(s) psi^+_H [Pa], body (material id) and MPI rank.
    */
   class SolutionWriter
   {
@@ -31,7 +33,8 @@ namespace DuctileContact
     void
     write(const unsigned int                                step,
           const double                                      time,
-          const dealii::TrilinosWrappers::MPI::BlockVector &u);
+          const dealii::TrilinosWrappers::MPI::BlockVector &u,
+          const CellQuantities                             &cells);
 
   private:
     const std::string     directory;

@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <ductile_contact/solver/coupling_parameters.h>
 #include <ductile_contact/solver/linear_solver.h>
 #include <ductile_contact/solver/solver_parameters.h>
 #include <ductile_contact/solver/system_assembler.h>
@@ -22,6 +23,8 @@ namespace DuctileContact
     bool         converged         = false;
     unsigned int iterations        = 0;
     unsigned int linear_iterations = 0;
+    /// Alternations of the staggered scheme (1 for monolithic).
+    unsigned int staggered_iterations = 1;
     /// ||R|| of the iterations whose Dirichlet data were reached.
     std::vector<double> residual_norms;
     /// Observed order log(r_k+1/r_k)/log(r_k/r_k-1) of the last three
@@ -32,19 +35,28 @@ namespace DuctileContact
   };
 
   /**
-   * Newton's method for R(u) = 0 at one load time, with the Dirichlet data
-   * imposed through the update (so a shortened step still reaches them) and
-   * a backtracking line search on ||R|| over the free DoFs. A trial state
-   * that inverts an element (J <= 0) is always shortened.
+   * Newton's method for R(u, alpha, s) = 0 at one load step, with the
+   * Dirichlet data imposed through the update (so a shortened step still
+   * reaches them) and a backtracking line search on the merit
    *
-   * Converged when ||R|| <= rtol ||f_int|| + atol * force_scale (f_int holds
-   * the reactions, so the test is relative to the load carried) and the
-   * Dirichlet values are reached.
+   *   m = sqrt(||R_u||^2 + sum_{b = alpha, s} (||R_b|| S_u / S_b)^2),
+   *
+   * S_b the residual scales of AssemblyInfo (m = ||R_u|| without alpha and
+   * s). A trial state that inverts an element (J <= 0) is always shortened.
+   *
+   * Converged when the Dirichlet values are reached and ||R_u|| <= rtol
+   * ||f_int,u|| + atol * force_scale (f_int holds the reactions, so the test
+   * is relative to the load carried) and ||R_b|| <= rtol S_b for alpha and
+   * s (S_b: the local terms at alpha = 1 or s = 1).
+   *
+   * solve_step() applies the coupling strategy: monolithic, or staggered
+   * (CouplingParameters).
    */
   class NewtonSolver
   {
   public:
     NewtonSolver(const NewtonParameters              &parameters,
+                 const CouplingParameters            &coupling,
                  const Discretisation                &discretisation,
                  const SystemAssembler               &assembler,
                  LinearSolver                        &linear_solver,
@@ -58,17 +70,26 @@ namespace DuctileContact
     setup();
 
     /**
-     * Solves at load time @p t starting from @p u (owned entries); on
+     * Solves the load step @p step starting from @p u (owned entries); on
      * success @p u is the solution and @p internal_force holds f_int there.
      * On failure @p u is unspecified: the caller restores its copy.
      */
     NewtonReport
-    solve(const double                                t,
+    solve_step(const StepData                             &step,
+               dealii::TrilinosWrappers::MPI::BlockVector &u,
+               dealii::TrilinosWrappers::MPI::BlockVector &internal_force);
+
+    /// Newton on the blocks not marked in @p frozen (the others keep their
+    /// values).
+    NewtonReport
+    solve(const StepData                             &step,
           dealii::TrilinosWrappers::MPI::BlockVector &u,
-          dealii::TrilinosWrappers::MPI::BlockVector &internal_force);
+          dealii::TrilinosWrappers::MPI::BlockVector &internal_force,
+          const std::array<bool, Block::n_blocks>    &frozen);
 
   private:
     const NewtonParameters              &parameters;
+    const CouplingParameters            &coupling;
     const Discretisation                &discretisation;
     const SystemAssembler               &assembler;
     LinearSolver                        &linear_solver;

@@ -3,11 +3,14 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <ductile_contact/discretisation/boundary_condition.h>
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/materials/body_parameters.h>
+#include <ductile_contact/solver/quadrature_history.h>
 
+#include <array>
 #include <deque>
 #include <map>
 
@@ -20,14 +23,35 @@ namespace DuctileContact
     /// is not admissible and nothing else here is meaningful.
     bool   inverted = false;
     double min_J    = 1.;
-    /// int Psi dV over the reference configuration [J].
+    /// int Psi^e dV over the reference configuration [J] (degraded).
     double stored_energy = 0.;
+    /// int (int_0^alpha yhat da + y_0 l_p^2/2 |grad alpha|^2) dV [J], (20).
+    double hardening_energy = 0.;
+    /// g_c int gamma dV with the C0IP-consistent bi-Laplacian [J]:
+    /// a(s, s)/2 of phase_field/c0ip.h.
+    double fracture_energy = 0.;
+    /// Of the step from the committed state to this one [J]: the plastic
+    /// work int tau : d^p dt = int sqrt(3/2) |tau_dev| (alpha - alpha_n)
+    /// over yielding points, and the viscous dissipation of the phase
+    /// field int eta_f (s - s_n)^2/dt.
+    double plastic_work_increment          = 0.;
+    double fracture_viscous_work_increment = 0.;
     /// Size of the terms summed into f_int: sqrt of the sum over cells and
     /// DoFs of (sum over quadrature points of (|P : Grad N_i| + (mu + kappa)
     /// |Grad N_i|) JxW)^2 [N]. F = I + Grad u resolves Grad u only to eps,
     /// so P is uncertain by eps (mu + kappa): ||R|| cannot drop much below
     /// eps times this, whatever the solver does.
     double force_magnitude = 0.;
+    /// Residual scale of each block: for alpha y_0 and for s g_c/(2 l_f)
+    /// times sqrt(sum over cells and DoFs of (int N_i dV)^2), i.e. the size
+    /// of the local terms at alpha = 1 or s = 1 [J]; force_magnitude for u.
+    std::array<double, Block::n_blocks> residual_scale{{0., 0., 0.}};
+  };
+
+  /// Cell averages for graphical output, indexed by active cell index.
+  struct CellQuantities
+  {
+    dealii::Vector<float> von_mises, mean_stress, J, crack_driving_force;
   };
 
   /// Where assemble() writes; null members are skipped.
@@ -38,22 +62,44 @@ namespace DuctileContact
     /// -R condensed with the (inhomogeneous) Newton constraints: the
     /// right-hand side of K delta = -R.
     dealii::TrilinosWrappers::MPI::BlockVector *newton_rhs = nullptr;
-    /// R = f_int - f_ext on free DoFs (constrained entries zero): its norm
-    /// decides convergence.
+    /// R on free DoFs (constrained entries zero): its norm decides
+    /// convergence.
     dealii::TrilinosWrappers::MPI::BlockVector *residual = nullptr;
     /// f_int condensed with the hanging-node constraints only (Dirichlet
     /// rows kept): reactions and external work come from it.
     dealii::TrilinosWrappers::MPI::BlockVector *internal_force = nullptr;
+    /// The history after this state (commit of an accepted step).
+    QuadratureHistory *history = nullptr;
+    /// Cell averages for output.
+    CellQuantities *cell_quantities = nullptr;
+  };
+
+  /// The load step being solved: time, step and the accepted state before.
+  struct StepData
+  {
+    double t  = 0.;
+    double dt = 1.;
+    /// Solution of the last accepted step, with ghost entries.
+    const dealii::TrilinosWrappers::MPI::BlockVector *old_solution = nullptr;
+    const QuadratureHistory                          *history      = nullptr;
   };
 
   /**
-   * Residual and exact tangent of the total-Lagrangian equilibrium
+   * Residual and exact tangent of the coupled total-Lagrangian problem
+   * [u | alpha | s] (model.md sections 2-4):
    *
-   *   R(u) = int_B P(F) : Grad du dV - int_dB T . du dA = 0,  F = I + Grad u,
+   *   R_u     = int P : Grad du dV - int_dB T . du dA
+   *   R_alpha = int dalpha r(F, alpha, s) + chi_p y_0 l_p^2 grad dalpha .
+   *             grad alpha dV                                          (50)
+   *   R_s     = int eta_f (s - s_n)/dt ds + g_k'(s) psi^+_H ds dV
+   *             + a(s, ds)                                             (51)
    *
-   * with P and A = dP/dF from the body's material (model.md (16)/(19)) and
-   * dead-load nominal tractions T. A pure assembly: it does not own vectors,
-   * know the load history or decide anything.
+   * with P and r from evaluate_material(), psi^+_H = max(psi^+_hist,
+   * psi^+(F, alpha)) the crack driver with history (irreversibility,
+   * chi_f = 1), and a(., .) the C0IP form of g_c gamma (phase_field/c0ip.h)
+   * with cell and interior-face terms. Dead-load nominal tractions T.
+   * A pure assembly: it does not own vectors, know the load history or
+   * decide anything.
    */
   class SystemAssembler
   {
@@ -67,11 +113,17 @@ namespace DuctileContact
     /// zeroed and compressed here.
     AssemblyInfo
     assemble(const dealii::TrilinosWrappers::MPI::BlockVector &u,
-             const double                                      t,
+             const StepData                                   &step,
              const dealii::AffineConstraints<double>          &constraints,
              const AssemblyTargets                            &targets) const;
 
   private:
+    void
+    assemble_faces(const dealii::TrilinosWrappers::MPI::BlockVector &u,
+                   const dealii::AffineConstraints<double> &constraints,
+                   const AssemblyTargets                   &targets,
+                   AssemblyInfo                            &info) const;
+
     const Discretisation &discretisation;
     const std::map<dealii::types::material_id, const BodyParameters *> bodies;
     const std::deque<BoundaryCondition> &boundary_conditions;

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace DuctileContact
+{
+  /**
+   * Subsection `Coupling`: how the fields [u | alpha | s] are solved at a
+   * load step when a body cracks.
+   *
+   *  - monolithic: Newton on all fields at once with the exact coupled
+   *    tangent;
+   *  - staggered: alternate minimisation, Newton on (u, alpha) with s fixed,
+   *    then on s with (u, alpha) fixed, repeated until a sub-solve finds its
+   *    fields already converged (so all blocks meet the Newton tolerances
+   *    at the same state, as in the monolithic scheme).
+   */
+  struct CouplingParameters
+  {
+    std::string  strategy                   = "monolithic";
+    unsigned int max_staggered_iterations   = 200;
+
+    void
+    declare(dealii::ParameterHandler &prm);
+    void
+    check() const;
+  };
+} // namespace DuctileContact

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <ductile_contact/materials/plasticity.h>
+
+#include <vector>
+
+namespace DuctileContact
+{
+  /// Internal state of one quadrature point at the last accepted step.
+  struct PointHistory
+  {
+    /// (C^p_n)^{-1} and alpha_n (model.md section 3).
+    PlasticHistory plastic;
+    /// max over accepted steps of psi^+ (27): the crack driver history
+    /// that makes s irreversible (model.md section 2, Miehe 2010).
+    double psi_plus_max = 0.;
+  };
+
+  /**
+   * Quadrature-point history of every locally owned cell, indexed by the
+   * active cell index. It is written only when a load step is accepted
+   * (SystemAssembler::assemble with a commit target), so a rejected or
+   * cut-back step leaves no trace. The mesh must not change while it is
+   * in use.
+   */
+  class QuadratureHistory
+  {
+  public:
+    void
+    reinit(const dealii::DoFHandler<dim> &dof_handler,
+           const unsigned int             points_per_cell)
+    {
+      n_points = points_per_cell;
+      data.assign(dof_handler.get_triangulation().n_active_cells() * n_points,
+                  PointHistory());
+    }
+
+    template <typename CellIterator>
+    const PointHistory *
+    operator()(const CellIterator &cell) const
+    {
+      return &data[cell->active_cell_index() * n_points];
+    }
+
+    template <typename CellIterator>
+    PointHistory *
+    operator()(const CellIterator &cell)
+    {
+      return &data[cell->active_cell_index() * n_points];
+    }
+
+  private:
+    unsigned int              n_points = 0;
+    std::vector<PointHistory> data;
+  };
+} // namespace DuctileContact
