@@ -25,44 +25,6 @@ using namespace DuctileContact;
 
 namespace
 {
-  /// One homogeneous uniaxial-stress step: finds lateral stretch and alpha.
-  PlasticResponse
-  uniaxial_step(const double                lambda,
-                const PlasticHistory       &history,
-                const double                dt,
-                const PlasticityParameters &p)
-  {
-    const auto solve_alpha = [&](const Tensor<2, dim> &F) {
-      // Start just above alpha_n: at alpha = alpha_n the flow is switched
-      // off and dr/dalpha lacks the stress relaxation.
-      double          alpha = history.alpha + 1e-12;
-      PlasticResponse r = plastic_update(F, history, alpha, 0., dt, p, true);
-      if (!r.yielding) // elastic: r = eta_p (alpha - alpha_n)/dt = 0
-        return plastic_update(F, history, history.alpha, 0., dt, p, true);
-      for (unsigned int it = 0; it < 50 && r.yielding; ++it)
-        {
-          alpha = std::max(history.alpha + 1e-12, alpha - r.r / r.dr_dalpha);
-          r     = plastic_update(F, history, alpha, 0., dt, p, true);
-          if (std::abs(r.r) < 1e-14)
-            break;
-        }
-      return r;
-    };
-    double lo = 0.5, hi = 1.5;
-    for (unsigned int i = 0; i < 60; ++i)
-      {
-        const double   mid = 0.5 * (lo + hi);
-        Tensor<2, dim> F;
-        F[0][0] = lambda;
-        F[1][1] = F[2][2]                        = mid;
-        (solve_alpha(F).tau[1][1] > 0 ? hi : lo) = mid;
-      }
-    Tensor<2, dim> F;
-    F[0][0] = lambda;
-    F[1][1] = F[2][2] = 0.5 * (lo + hi);
-    return solve_alpha(F);
-  }
-
   /// Small-strain rate-independent reference: sigma = yhat(eps - sigma/E).
   double
   reference_stress(const double eps, const PlasticityParameters &p)
@@ -178,7 +140,7 @@ main()
         for (unsigned int n = 1; n <= 100; ++n)
           {
             const double          lambda = 1. + 0.0002 * n;
-            const PlasticResponse r      = uniaxial_step(lambda, h, dt, q);
+            const PlasticResponse r      = Testing::uniaxial_plastic_step(lambda, h, dt, q);
             h                            = r.updated;
             const double eps             = std::log(lambda);
             const double sigma           = r.tau[0][0];
@@ -211,10 +173,10 @@ main()
     PlasticResponse r;
     for (unsigned int n = 1; n <= 50; ++n)
       {
-        r = uniaxial_step(1. + 0.0002 * n, h, 0.01, p);
+        r = Testing::uniaxial_plastic_step(1. + 0.0002 * n, h, 0.01, p);
         h = r.updated;
       }
-    const PlasticResponse u = uniaxial_step(1. + 0.0002 * 49, h, 0.01, p);
+    const PlasticResponse u = Testing::uniaxial_plastic_step(1. + 0.0002 * 49, h, 0.01, p);
     const double          E = 9. * p.bulk_modulus * p.shear_modulus /
                      (3. * p.bulk_modulus + p.shear_modulus);
     const double slope = (r.tau[0][0] - u.tau[0][0]) / 0.0002;

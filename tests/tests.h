@@ -10,6 +10,7 @@
 #include <ductile_contact/app/run_parameters.h>
 #include <ductile_contact/app/simulation.h>
 #include <ductile_contact/materials/neo_hooke.h>
+#include <ductile_contact/materials/plasticity.h>
 #include <ductile_contact/output/tee_stream.h>
 
 #include <filesystem>
@@ -115,6 +116,47 @@ namespace Testing
   }
 
   /// Relative difference, guarded for a zero reference.
+  /**
+   * One homogeneous uniaxial-stress step of the plasticity update: F =
+   * diag(lambda, lt, lt) with tau_yy = 0 (lt by bisection) and alpha from
+   * the local hardening equation r = 0 (Newton with dr/dalpha).
+   */
+  inline DuctileContact::PlasticResponse
+  uniaxial_plastic_step(const double                lambda,
+                const DuctileContact::PlasticHistory       &history,
+                const double                dt,
+                const DuctileContact::PlasticityParameters &p)
+  {
+    const auto solve_alpha = [&](const dealii::Tensor<2, DuctileContact::dim> &F) {
+      // Start just above alpha_n (the one-sided derivative of the flow).
+      double          alpha = history.alpha + 1e-12;
+      DuctileContact::PlasticResponse r = DuctileContact::plastic_update(F, history, alpha, 0., dt, p, true);
+      if (!r.yielding) // elastic: r = eta_p (alpha - alpha_n)/dt = 0
+        return DuctileContact::plastic_update(F, history, history.alpha, 0., dt, p, true);
+      for (unsigned int it = 0; it < 50 && r.yielding; ++it)
+        {
+          alpha = std::max(history.alpha + 1e-12, alpha - r.r / r.dr_dalpha);
+          r     = DuctileContact::plastic_update(F, history, alpha, 0., dt, p, true);
+          if (std::abs(r.r) < 1e-14)
+            break;
+        }
+      return r;
+    };
+    double lo = 0.5, hi = 1.5;
+    for (unsigned int i = 0; i < 60; ++i)
+      {
+        const double   mid = 0.5 * (lo + hi);
+        dealii::Tensor<2, DuctileContact::dim> F;
+        F[0][0] = lambda;
+        F[1][1] = F[2][2]                        = mid;
+        (solve_alpha(F).tau[1][1] > 0 ? hi : lo) = mid;
+      }
+    dealii::Tensor<2, DuctileContact::dim> F;
+    F[0][0] = lambda;
+    F[1][1] = F[2][2] = 0.5 * (lo + hi);
+    return solve_alpha(F);
+  }
+
   inline double
   relative_error(const double value, const double reference, const double scale)
   {

@@ -145,6 +145,22 @@ namespace DuctileContact
 
 
 
+  double
+  elastic_energy(const Tensor<2, dim>          &F,
+                 const SymmetricTensor<2, dim> &Cp_inv,
+                 const double                   s,
+                 const PlasticityParameters    &p)
+  {
+    const double J     = determinant(F);
+    const double g_dev = degradation_of(s, p);
+    const double g_vol = J > 1. ? g_dev : 1.;
+    const double tr_b  = std::pow(J, -2. / 3.) * trace(push_forward(F, Cp_inv));
+    return g_vol * 0.5 * p.bulk_modulus * (J - 1.) * (J - 1.) +
+           g_dev * 0.5 * p.shear_modulus * (tr_b - 3.);
+  }
+
+
+
   PlasticResponse
   plastic_update(const Tensor<2, dim>       &F,
                  const PlasticHistory       &history_n,

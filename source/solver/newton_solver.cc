@@ -82,6 +82,11 @@ namespace DuctileContact
                                              Utilities::MPI::this_mpi_process(
                                                comm));
       }
+        // Constrained rows get a diagonal entry in distribute_local_to_global(),
+    // also from face terms assembled on a ghost neighbour's DoFs, whose
+    // diagonal the flux pattern of this rank does not hold.
+    for (const auto i : discretisation.locally_relevant_dofs)
+      sp.add(i, i);
     sp.compress();
     tangent.reinit(sp);
 
@@ -166,8 +171,8 @@ namespace DuctileContact
     };
 
     // Norms of the residual blocks (frozen blocks are constrained, so
-    // their entries are zero) and the merit combining them in force units
-    // with the scales of the state at the start of the iteration.
+    // their entries are zero), their tolerances, and the merit: the norms
+    // in units of the tolerances (for u alone simply ||R_u|| / tol_u).
     using Norms            = std::array<double, Block::n_blocks>;
     const auto block_norms = [&]() {
       Norms n;
@@ -175,46 +180,49 @@ namespace DuctileContact
         n[b] = residual.block(b).l2_norm();
       return n;
     };
-    const auto merit = [](const Norms &n, const AssemblyInfo &scales) {
-      double sum = n[0] * n[0];
+    const auto tolerances = [&](const double        f_int_norm,
+                                const AssemblyInfo &info) {
+      Norms tol;
+      tol[0] = parameters.relative_tolerance * f_int_norm +
+               parameters.absolute_tolerance * force_scale;
       for (unsigned int b = 1; b < Block::n_blocks; ++b)
-        if (scales.residual_scale[b] > 0.)
-          {
-            const double weighted =
-              n[b] * scales.residual_scale[0] / scales.residual_scale[b];
-            sum += weighted * weighted;
-          }
+        tol[b] = parameters.relative_tolerance * info.residual_scale[b];
+      return tol;
+    };
+    const auto merit = [](const Norms &n, const Norms &tol) {
+      double sum = 0;
+      for (unsigned int b = 0; b < Block::n_blocks; ++b)
+        if (tol[b] > 0.)
+          sum += (n[b] / tol[b]) * (n[b] / tol[b]);
       return std::sqrt(sum);
     };
-    const auto within_tolerance =
-      [&](const Norms &n, const double f_int_norm, const AssemblyInfo &info) {
-        if (n[0] > parameters.relative_tolerance * f_int_norm +
-                     parameters.absolute_tolerance * force_scale)
-          return false;
-        for (unsigned int b = 1; b < Block::n_blocks; ++b)
-          if (n[b] > parameters.relative_tolerance * info.residual_scale[b])
-            return false;
-        return true;
-      };
 
-    // Records the merit of a state whose Dirichlet data are reached and
-    // returns whether it is converged; if so, also the observed order from
-    // the last three merits above the round-off floor (eps times the size
-    // of the terms summed into f_int, see AssemblyInfo::force_magnitude): a
-    // residual at that floor says nothing about the rate, so the rate stays
-    // undefined (nan) when fewer than three residuals lie above it.
-    const auto converged = [&](const double        m,
-                               const Norms        &n,
+    // Records the merit (in the tolerances of the first state, so that
+    // ratios are meaningful) of a state whose Dirichlet data are reached
+    // and returns whether every block meets its tolerance; if so, also the
+    // observed order from the last three merits above the round-off floor
+    // (eps times the size of the terms summed into each block, see
+    // AssemblyInfo::residual_magnitude): a residual at that floor says
+    // nothing about the rate, so the rate stays undefined (nan) when fewer
+    // than three residuals lie above it.
+    Norms      reference{};
+    const auto converged = [&](const Norms        &n,
                                const double        f_int_norm,
                                const AssemblyInfo &info) {
-      report.residual_norms.push_back(m);
-      if (!within_tolerance(n, f_int_norm, info))
-        return false;
+      report.residual_norms.push_back(merit(n, reference));
+      const Norms tol = tolerances(f_int_norm, info);
+      for (unsigned int b = 0; b < Block::n_blocks; ++b)
+        if (n[b] > tol[b])
+          return false;
       report.converged = true;
-      const double floor =
-        std::numeric_limits<double>::epsilon() * info.force_magnitude;
-      const auto &h = report.residual_norms;
-      std::size_t k = h.size();
+      Norms floor_norms;
+      for (unsigned int b = 0; b < Block::n_blocks; ++b)
+        floor_norms[b] = frozen[b] ? 0. :
+                                     std::numeric_limits<double>::epsilon() *
+                                       info.residual_magnitude[b];
+      const double floor = merit(floor_norms, reference);
+      const auto  &h     = report.residual_norms;
+      std::size_t  k     = h.size();
       while (k >= 3 && h[k - 1] <= floor)
         --k;
       if (k >= 3 && h[k - 1] > 0 && h[k - 2] > 0 && h[k - 3] > 0 &&
@@ -227,26 +235,23 @@ namespace DuctileContact
     const bool coupled = discretisation.dofs_per_block[Block::hardening] +
                            discretisation.dofs_per_block[Block::phase_field] >
                          0;
-    const auto print = [&](const unsigned int  it,
-                           const double        m,
+    const auto print   = [&](const unsigned int  it,
                            const Norms        &n,
-                           const double        scale,
+                           const double        f_int_norm,
                            const AssemblyInfo &info,
                            const bool          pending) {
       verbose_out << "      Newton " << std::setw(2) << it
-                  << ": |R| = " << std::scientific << std::setprecision(3) << m
-                  << ", |R|/|f_int| = " << (scale > 0 ? m / scale : 0.);
+                  << ": |R| = " << std::scientific << std::setprecision(3)
+                  << n[0] << ", |R|/|f_int| = "
+                  << (f_int_norm > 0 ? n[0] / f_int_norm : 0.);
       if (coupled)
         {
           const char *names[] = {"u", "alpha", "s"};
-          verbose_out << " (";
+          const Norms tol     = tolerances(f_int_norm, info);
+          verbose_out << "; in tolerances:";
           for (unsigned int b = 0; b < Block::n_blocks; ++b)
             if (!frozen[b] && discretisation.dofs_per_block[b] > 0)
-              verbose_out << (b == 0 ? "" : " ") << names[b] << " "
-                          << n[b] /
-                               std::max(b == 0 ? scale : info.residual_scale[b],
-                                        1e-300);
-          verbose_out << ")";
+              verbose_out << " " << names[b] << " " << n[b] / tol[b];
         }
       verbose_out << (pending ? ", Dirichlet data pending" : "")
                   << std::defaultfloat << std::endl;
@@ -271,13 +276,15 @@ namespace DuctileContact
             constraints,
             {&tangent, &newton_rhs, &residual, &internal_force});
         }
-        const AssemblyInfo scales = report.info;
-        const Norms        n      = block_norms();
-        const double       r      = merit(n, scales);
-        const double       scale  = internal_force.block(0).l2_norm();
-        report.iterations         = it;
+                const Norms  n     = block_norms();
+        const double scale = internal_force.block(0).l2_norm();
+        const Norms  tol   = tolerances(scale, report.info);
+        const double r     = merit(n, tol);
         if (it == 0)
-          print(it, r, n, scale, scales, pending);
+          reference = tol;
+        report.iterations = it;
+        if (it == 0)
+          print(it, n, scale, report.info, pending);
         if (!std::isfinite(r))
           {
             report.failure = "residual is not finite";
@@ -285,7 +292,7 @@ namespace DuctileContact
           }
         // From the second iteration on, convergence is decided right after
         // the line search; only the start of a step is checked here.
-        if (it == 0 && !pending && converged(r, n, scale, report.info))
+        if (it == 0 && !pending && converged(n, scale, report.info))
           return report;
 
         unsigned int n_linear = 0;
@@ -326,7 +333,7 @@ namespace DuctileContact
                 constraints,
                 {nullptr, nullptr, &residual, &internal_force});
               trial_n     = block_norms();
-              trial_r     = merit(trial_n, scales);
+              trial_r     = merit(trial_n, tol);
               trial_scale = internal_force.block(0).l2_norm();
             }
             const bool decreases = pending || !parameters.line_search ||
@@ -354,10 +361,10 @@ namespace DuctileContact
                     << std::endl;
 
         const bool still_pending = pending && step_length < 1.;
-        print(it + 1, trial_r, trial_n, trial_scale, trial_info, still_pending);
+        print(it + 1, trial_n, trial_scale, trial_info, still_pending);
         report.iterations = it + 1;
         if (!still_pending &&
-            converged(trial_r, trial_n, trial_scale, trial_info))
+            converged(trial_n, trial_scale, trial_info))
           {
             report.info = trial_info;
             return report;

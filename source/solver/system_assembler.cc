@@ -52,10 +52,33 @@ namespace DuctileContact
     const Discretisation                                       &discretisation,
     const std::map<types::material_id, const BodyParameters *> &bodies,
     const std::deque<BoundaryCondition> &boundary_conditions)
-      : discretisation(discretisation)
+            : discretisation(discretisation)
       , bodies(bodies)
       , boundary_conditions(boundary_conditions)
+      , elastic_values(discretisation.mapping,
+                       discretisation.fe_collection,
+                       discretisation.quadrature,
+                       update_gradients | update_JxW_values)
+      , coupled_values(discretisation.mapping,
+                       discretisation.fe_collection,
+                       discretisation.quadrature,
+                       update_values | update_gradients | update_hessians |
+                         update_JxW_values)
+      , face_values(discretisation.mapping,
+                    discretisation.fe_collection,
+                    discretisation.face_quadrature,
+                    update_values | update_quadrature_points |
+                      update_JxW_values)
   {
+    for (unsigned int i = 0; i < discretisation.fe_collection.size(); ++i)
+      interface_values.emplace_back(
+        (i & 2) ? std::make_unique<FEInterfaceValues<dim>>(
+                    discretisation.mapping[0],
+                    discretisation.fe_collection[i],
+                    discretisation.face_quadrature[i],
+                    update_gradients | update_hessians |
+                      update_normal_vectors | update_JxW_values) :
+                  nullptr);
   }
 
 
@@ -87,27 +110,15 @@ namespace DuctileContact
 
     // Elastic cells need gradients only; cells with alpha or s also values
     // and (for the bi-Laplacian) hessians.
-    hp::FEValues<dim>     hp_elastic(discretisation.mapping,
-                                 discretisation.fe_collection,
-                                 discretisation.quadrature,
-                                 update_gradients | update_JxW_values);
-    hp::FEValues<dim>     hp_coupled(discretisation.mapping,
-                                 discretisation.fe_collection,
-                                 discretisation.quadrature,
-                                 update_values | update_gradients |
-                                   update_hessians | update_JxW_values);
-    hp::FEFaceValues<dim> hp_face_values(discretisation.mapping,
-                                         discretisation.fe_collection,
-                                         discretisation.face_quadrature,
-                                         update_values |
-                                           update_quadrature_points |
-                                           update_JxW_values);
+    hp::FEValues<dim>     &hp_elastic     = elastic_values;
+    hp::FEValues<dim>     &hp_coupled     = coupled_values;
+    hp::FEFaceValues<dim> &hp_face_values = face_values;
 
     FullMatrix<double>                   cell_matrix, c0ip_matrix;
     Vector<double>                       cell_f_int, cell_rhs, cell_magnitude;
     Vector<double>                       cell_scale_alpha, cell_scale_s;
     std::vector<types::global_dof_index> dof_indices;
-    std::vector<Tensor<2, dim>>          grad_u;
+    std::vector<Tensor<2, dim>>          grad_u, grad_u_old;
     std::vector<double>                  alpha, s, s_old;
     std::vector<Tensor<1, dim>>          grad_alpha;
     std::vector<unsigned int>            u_dofs, u_component, a_dofs, s_dofs;
@@ -181,8 +192,12 @@ namespace DuctileContact
           grad_alpha.assign(n_q, Tensor<1, dim>());
           s.assign(n_q, 0.);
           s_old.assign(n_q, 0.);
+          grad_u_old.assign(n_q, Tensor<2, dim>());
           if (has_alpha)
             {
+              if (step.old_solution)
+                fe_values[discretisation.displacement].get_function_gradients(
+                  *step.old_solution, grad_u_old);
               fe_values[discretisation.hardening].get_function_values(u, alpha);
               fe_values[discretisation.hardening].get_function_gradients(
                 u, grad_alpha);
@@ -267,7 +282,6 @@ namespace DuctileContact
               // Hardening rows, (50).
               if (has_alpha)
                 {
-                  const double alpha_n = history_n[q]->plastic.alpha;
                   const double l_p     = body.plastic_length_scale;
                   const double gradient_coefficient =
                     m.yielding ? plastic.initial_yield * l_p * l_p : 0.;
@@ -276,10 +290,23 @@ namespace DuctileContact
                      0.5 * plastic.initial_yield * l_p * l_p *
                        grad_alpha[q].norm_square()) *
                     JxW;
-                  if (m.yielding)
-                    info.plastic_work_increment += std::sqrt(1.5) *
-                                                   deviator(m.tau).norm() *
-                                                   (alpha[q] - alpha_n) * JxW;
+                  // Plastic work of the step: the elastic energy the flow
+                  // C^p_n -> C^p releases, averaged over F_n and F (second
+                  // order in dt; together with the trapezoidal external
+                  // work the energy balance then closes as dt -> 0).
+                  {
+                    const SymmetricTensor<2, dim> &C_n =
+                      history_n[q]->plastic.Cp_inv;
+                    const Tensor<2, dim> F_n =
+                      Physics::Elasticity::StandardTensors<dim>::I +
+                      grad_u_old[q];
+                    info.plastic_work_increment +=
+                      0.5 *
+                      (elastic_energy(F, C_n, s[q], plastic) - m.psi_elastic +
+                       elastic_energy(F_n, C_n, s[q], plastic) -
+                       elastic_energy(F_n, m.updated.Cp_inv, s[q], plastic)) *
+                      JxW;
+                  }
                   for (unsigned int k = 0; k < n_a; ++k)
                     {
                       const unsigned int i = a_dofs[k];
@@ -289,6 +316,14 @@ namespace DuctileContact
                         JxW;
                       cell_scale_alpha(i) +=
                         plastic.initial_yield * a_value[k] * JxW;
+                      // r compares stresses known to eps (mu + kappa).
+                      cell_magnitude(i) +=
+                        (std::abs(m.r) + plastic.shear_modulus +
+                         plastic.bulk_modulus) *
+                          std::abs(a_value[k]) * JxW +
+                        std::abs(gradient_coefficient * (a_grad[k] *
+                                                         grad_alpha[q])) *
+                          JxW;
                       if (!with_tangent)
                         continue;
                       for (unsigned int l = 0; l < n_u; ++l)
@@ -336,6 +371,9 @@ namespace DuctileContact
                       cell_f_int(i) +=
                         (eta_f * rate + g1 * psi_H) * s_value[k] * JxW;
                       cell_scale_s(i) += scale * s_value[k] * JxW;
+                      cell_magnitude(i) +=
+                        (std::abs(eta_f * rate) + std::abs(g1 * psi_H)) *
+                        std::abs(s_value[k]) * JxW;
                       if (!with_tangent)
                         continue;
                       for (unsigned int l = 0; l < n_s; ++l)
@@ -379,8 +417,13 @@ namespace DuctileContact
                 {
                   double sum = 0;
                   for (unsigned int l = 0; l < n_s; ++l)
-                    sum += c0ip_matrix(s_dofs[k], s_dofs[l]) *
-                           u(dof_indices[s_dofs[l]]);
+                    {
+                      sum += c0ip_matrix(s_dofs[k], s_dofs[l]) *
+                             u(dof_indices[s_dofs[l]]);
+                      // s is known to eps in absolute terms (s <= 1).
+                      cell_magnitude(s_dofs[k]) +=
+                        std::abs(c0ip_matrix(s_dofs[k], s_dofs[l]));
+                    }
                   cell_f_int(s_dofs[k]) += sum;
                   info.fracture_energy += 0.5 * u(dof_indices[s_dofs[k]]) * sum;
                 }
@@ -388,7 +431,15 @@ namespace DuctileContact
                 cell_matrix.add(1., c0ip_matrix);
             }
 
-          info.force_magnitude += cell_magnitude.norm_sqr();
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            {
+              const unsigned int c = fe.system_to_component_index(i).first;
+              info.residual_magnitude[c < dim ? Block::displacement :
+                                      c == Component::hardening ?
+                                                Block::hardening :
+                                                Block::phase_field] +=
+                cell_magnitude(i) * cell_magnitude(i);
+            }
           info.residual_scale[Block::hardening] += cell_scale_alpha.norm_sqr();
           info.residual_scale[Block::phase_field] += cell_scale_s.norm_sqr();
           if (cq && volume > 0.)
@@ -467,9 +518,11 @@ namespace DuctileContact
                              info.fracture_energy,
                              info.plastic_work_increment,
                              info.fracture_viscous_work_increment,
-                             info.force_magnitude,
+                             info.residual_magnitude[Block::displacement],
                              info.residual_scale[Block::hardening],
-                             info.residual_scale[Block::phase_field]};
+                             info.residual_scale[Block::phase_field],
+                             info.residual_magnitude[Block::hardening],
+                             info.residual_magnitude[Block::phase_field]};
     Utilities::MPI::sum(sums, comm, sums);
     info.stored_energy                       = sums[0];
     info.hardening_energy                    = sums[1];
@@ -477,6 +530,9 @@ namespace DuctileContact
     info.plastic_work_increment              = sums[3];
     info.fracture_viscous_work_increment     = sums[4];
     info.force_magnitude                     = std::sqrt(sums[5]);
+    info.residual_magnitude[Block::displacement] = info.force_magnitude;
+    info.residual_magnitude[Block::hardening]    = std::sqrt(sums[8]);
+    info.residual_magnitude[Block::phase_field]  = std::sqrt(sums[9]);
     info.residual_scale[Block::displacement] = info.force_magnitude;
     info.residual_scale[Block::hardening]    = std::sqrt(sums[6]);
     info.residual_scale[Block::phase_field]  = std::sqrt(sums[7]);
@@ -509,11 +565,7 @@ namespace DuctileContact
       {
         if (!(fe_index & 2))
           continue;
-        FEInterfaceValues<dim> fiv(discretisation.mapping[0],
-                                   discretisation.fe_collection[fe_index],
-                                   discretisation.face_quadrature[fe_index],
-                                   update_gradients | update_hessians |
-                                     update_normal_vectors | update_JxW_values);
+        FEInterfaceValues<dim> &fiv = *interface_values[fe_index];
         for_each_interior_face(
           discretisation.dof_handler,
           fiv,

@@ -33,6 +33,16 @@ namespace DuctileContact
   double
   degradation(const double s, const PlasticityParameters &p);
 
+  /**
+   * Degraded elastic energy Psi^e (16) of the state (F, (C^p)^{-1}, s):
+   * b^e = F (C^p)^{-1} F^T, with the split (17).
+   */
+  double
+  elastic_energy(const dealii::Tensor<2, dim>          &F,
+                 const dealii::SymmetricTensor<2, dim> &Cp_inv,
+                 const double                           s,
+                 const PlasticityParameters            &p);
+
   /// Quadrature-point history, committed only on accepted steps.
   struct PlasticHistory
   {

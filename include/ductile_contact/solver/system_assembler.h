@@ -1,5 +1,7 @@
 #pragma once
 
+#include <deal.II/fe/fe_interface_values.h>
+#include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
@@ -13,6 +15,8 @@
 #include <array>
 #include <deque>
 #include <map>
+#include <memory>
+#include <vector>
 
 namespace DuctileContact
 {
@@ -31,9 +35,11 @@ namespace DuctileContact
     /// a(s, s)/2 of phase_field/c0ip.h.
     double fracture_energy = 0.;
     /// Of the step from the committed state to this one [J]: the plastic
-    /// work int tau : d^p dt = int sqrt(3/2) |tau_dev| (alpha - alpha_n)
-    /// over yielding points, and the viscous dissipation of the phase
-    /// field int eta_f (s - s_n)^2/dt.
+    /// work, i.e. the elastic energy the plastic flow releases at fixed F,
+    /// int Psi^e(F, C^p_n) - Psi^e(F, C^p) dV (= int tau : d^p dt to first
+    /// order in dt; exactly consistent with Psi^e, so that the energy
+    /// balance closes as dt -> 0), and the viscous dissipation of the
+    /// phase field int eta_f (s - s_n)^2/dt.
     double plastic_work_increment          = 0.;
     double fracture_viscous_work_increment = 0.;
     /// Size of the terms summed into f_int: sqrt of the sum over cells and
@@ -46,6 +52,10 @@ namespace DuctileContact
     /// times sqrt(sum over cells and DoFs of (int N_i dV)^2), i.e. the size
     /// of the local terms at alpha = 1 or s = 1 [J]; force_magnitude for u.
     std::array<double, Block::n_blocks> residual_scale{{0., 0., 0.}};
+    /// Size of the terms summed into each block of R, as force_magnitude
+    /// (which is the u entry): eps times it is the round-off floor of the
+    /// block's residual norm.
+    std::array<double, Block::n_blocks> residual_magnitude{{0., 0., 0.}};
   };
 
   /// Cell averages for graphical output, indexed by active cell index.
@@ -124,8 +134,18 @@ namespace DuctileContact
                    const AssemblyTargets                   &targets,
                    AssemblyInfo                            &info) const;
 
-    const Discretisation &discretisation;
+        const Discretisation &discretisation;
     const std::map<dealii::types::material_id, const BodyParameters *> bodies;
     const std::deque<BoundaryCondition> &boundary_conditions;
+
+    // Evaluation objects, built once: their shape data (in particular the
+    // hessians on all subfaces of FEInterfaceValues) are expensive to set
+    // up. Mutable scratch of a const assembly.
+    mutable dealii::hp::FEValues<dim>     elastic_values, coupled_values;
+    mutable dealii::hp::FEFaceValues<dim> face_values;
+    /// One per element that carries s (deal.II 9.4's FEInterfaceValues is
+    /// not hp-aware); null for the others.
+    mutable std::vector<std::unique_ptr<dealii::FEInterfaceValues<dim>>>
+      interface_values;
   };
 } // namespace DuctileContact

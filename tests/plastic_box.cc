@@ -1,0 +1,138 @@
+// Issue #4: homogeneous box (2x2x2 Q2 cells, unit cube) in uniaxial tension
+// with the visco-plastic J2 model and the hardening field alpha solved
+// globally by (50) with u, against the material-point driver
+// (Testing::uniaxial_plastic_step) stepped with the same load steps:
+//  - the nominal stress (reaction on x = 1) and the hardening energy
+//    int_0^alpha yhat equal the driver's to 1e-6 at every step;
+//  - the energy balance W_ext - Psi^e - W_p closes as dt -> 0, at second
+//    order (W_p: the elastic energy released by the flow, see
+//    AssemblyInfo): halving dt quarters it;
+//  - the plastic work equals the hardening energy up to the viscous part
+//    (eta_p is small here) and the O(elastic strain) = O(y0/mu) = 0.5 %
+//    by which the update (37) is not energy-consistent: within 1 %.
+// Run on 1 and 2 MPI ranks with identical output.
+#include "tests.h"
+
+using namespace dealii;
+using namespace DuctileContact;
+
+namespace
+{
+  std::string
+  box_prm(const double dt)
+  {
+    return R"(
+subsection Mesh
+  set Scene = box
+  subsection Box
+    set Subdivisions = 2, 2, 2
+  end
+end
+subsection Body 0
+  set Shear modulus = 1
+  set Bulk modulus  = 2.5
+  set Plasticity    = true
+  subsection Plasticity
+    set Initial yield stress    = 0.005
+    set Saturation yield stress = 0.006
+    set Saturation exponent     = 25
+    set Viscosity               = 1e-6
+  end
+end
+subsection Boundary conditions
+  set Boundary ids = 0, 1, 2, 4
+end
+subsection Boundary 0
+  set Constrained components = x
+end
+subsection Boundary 2
+  set Constrained components = y
+end
+subsection Boundary 4
+  set Constrained components = z
+end
+subsection Boundary 1
+  set Constrained components = x
+  set Displacement           = 0.02*t; 0; 0
+end
+subsection Load stepping
+  set End time  = 1
+  set Time step = )" +
+           std::to_string(dt) + R"(
+end
+subsection Newton
+  set Relative tolerance = 1e-11
+end
+subsection Output
+  set Interval = 0
+end
+)";
+  }
+
+  /// int_0^alpha yhat(a) da of (21) for h = 0.
+  double
+  hardening_energy(const double alpha, const PlasticityParameters &p)
+  {
+    const double eta = p.saturation_exponent;
+    return p.initial_yield * alpha + (p.saturation_yield - p.initial_yield) *
+                                       (alpha - (1. - std::exp(-eta * alpha)) /
+                                                  eta);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::ofstream                    out = Testing::open_output();
+
+  PlasticityParameters p;
+  p.viscosity = 1e-6;
+
+  double residual[2] = {0., 0.};
+  for (const unsigned int k : {0u, 1u})
+    {
+      const double dt = (k == 0) ? 0.1 : 0.05;
+      const auto   stats =
+        Testing::run_scene(box_prm(dt), "plastic_box_" + std::to_string(k));
+
+      PlasticHistory h;
+      double         worst_force = 0, worst_energy = 0;
+      for (unsigned int n = 1; n < stats.at("time").size(); ++n)
+        {
+          const double lambda = 1. + 0.02 * stats.at("time")[n];
+          const PlasticResponse r =
+            Testing::uniaxial_plastic_step(lambda, h, stats.at("dt")[n], p);
+          h                   = r.updated;
+          const double P_xx   = r.tau[0][0] / lambda;
+          const double energy = hardening_energy(h.alpha, p);
+          worst_force =
+            std::max(worst_force,
+                     std::abs(stats.at("F1_x")[n] - P_xx) / std::abs(P_xx));
+          if (energy > 0.)
+            worst_energy =
+              std::max(worst_energy,
+                       std::abs(stats.at("hardening_energy")[n] - energy) /
+                         energy);
+        }
+      const std::size_t last = stats.at("time").size() - 1;
+      residual[k]            = stats.at("energy_residual")[last];
+      const double W_p       = stats.at("plastic_work")[last];
+      const double Psi_p     = stats.at("hardening_energy")[last];
+      out << "dt = " << dt << ": reaction equals the driver's P_xx (1e-6): "
+          << Testing::yes_no(worst_force < 1e-6) << std::endl
+          << "  hardening energy equals the driver's (1e-6): "
+          << Testing::yes_no(worst_energy < 1e-6) << std::endl
+          << "  plastic work = hardening energy (1 %): "
+          << Testing::yes_no(std::abs(W_p - Psi_p) < 0.01 * Psi_p)
+          << std::endl;
+      std::cout << "dt " << dt << " worst force " << worst_force
+                << " worst energy " << worst_energy << " W_p " << W_p
+                << " Psi_p " << Psi_p << " residual " << residual[k]
+                << " W_ext " << stats.at("external_work")[last] << std::endl;
+    }
+  const double ratio = residual[0] / residual[1];
+  out << "energy residual shrinks as dt^2 (ratio 4 +- 0.4): "
+      << Testing::yes_no(std::abs(ratio - 4.) < 0.4) << std::endl;
+  std::cout << "energy residual ratio " << ratio << std::endl;
+}
