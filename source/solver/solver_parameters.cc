@@ -115,9 +115,13 @@ namespace DuctileContact
     prm.add_parameter(
       "Type",
       type,
-      "direct: sparse LU (Trilinos Amesos, see Direct solver); cg-amg: CG "
-      "preconditioned by Trilinos ML AMG with the six rigid-body modes; "
-      "gmres-amg: GMRES with the same AMG (for non-symmetric tangents).",
+      "direct: sparse LU (Trilinos Amesos, see Direct solver) of the whole "
+      "system; cg-amg: CG preconditioned by Trilinos ML AMG with the six "
+      "rigid-body modes; gmres-amg: GMRES with the same AMG (for "
+      "non-symmetric tangents). With alpha or s unknowns the coupled tangent "
+      "is not symmetric: cg-amg and gmres-amg then both run GMRES with a "
+      "block lower-triangular (block Gauss-Seidel) preconditioner: this AMG "
+      "on u, a scalar AMG on alpha, and on s the Phase-field preconditioner.",
       Patterns::Selection("direct|cg-amg|gmres-amg"));
     prm.add_parameter("Direct solver",
                       direct_solver,
@@ -134,13 +138,23 @@ namespace DuctileContact
                       Patterns::Integer(1));
     prm.add_parameter("AMG aggregation threshold",
                       aggregation_threshold,
-                      "ML aggregation threshold (1e-4 is best measured for "
-                      "Q2 elasticity, see docs).",
+                      "ML aggregation threshold of the AMG on u and alpha "
+                      "(1e-4 is best measured for Q2 elasticity, see docs); "
+                      "the AMG on s uses 0.02, best measured for its C0IP "
+                      "block.",
                       Patterns::Double(0., 1.));
     prm.add_parameter("AMG smoother sweeps",
                       smoother_sweeps,
                       "Chebyshev smoother sweeps per AMG level.",
                       Patterns::Integer(1, 10));
+    prm.add_parameter(
+      "Phase-field preconditioner",
+      phase_field_preconditioner,
+      "Iterative types with s unknowns: how the s-s diagonal block is "
+      "inverted inside the block preconditioner. amg: one ML AMG V-cycle "
+      "(its iterations grow with l_f/h); direct: a sparse LU of that block "
+      "with the Direct solver package, factorised once per linear solve.",
+      Patterns::Selection("amg|direct"));
     prm.leave_subsection();
   }
 

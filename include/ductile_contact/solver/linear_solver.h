@@ -3,24 +3,40 @@
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/solver/solver_parameters.h>
 
+#include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
+#include <array>
 #include <memory>
+#include <vector>
 
 namespace DuctileContact
 {
   /**
-   * Solves the Newton system K delta = b on the displacement block with a
-   * sparse direct solver (Trilinos Amesos: KLU or MUMPS) or with CG / GMRES
-   * preconditioned by ML smoothed-aggregation AMG, whose near-null space is
-   * the six rigid-body modes of the displacement DoFs (three translations,
-   * three rotations about the support points).
+   * Solves the Newton system K delta = b.
    *
-   * The alpha and s blocks are empty until their equations exist; solving a
-   * system with non-empty ones is refused.
+   * Without alpha and s unknowns (both blocks empty), on the displacement
+   * block: a sparse direct solver (Trilinos Amesos: KLU or MUMPS), or CG /
+   * GMRES preconditioned by ML smoothed-aggregation AMG, whose near-null
+   * space is the six rigid-body modes of the displacement DoFs (three
+   * translations, three rotations about the support points).
+   *
+   * With alpha or s unknowns, on the whole coupled [u | alpha | s] system,
+   * which is not symmetric in general:
+   *  - direct: the nine blocks are copied into one Trilinos matrix over the
+   *    global DoF indices (blocks are numbered consecutively) and factorised
+   *    by Amesos; the pattern of that copy is built on the first solve after
+   *    setup() and reused, only the values are copied on each solve;
+   *  - cg-amg, gmres-amg: right-preconditioned GMRES with the block
+   *    lower-triangular preconditioner BlockTriangularPreconditioner, the
+   *    diagonal blocks approximately inverted by the AMG above (u), a scalar
+   *    AMG (alpha), and a scalar AMG or a sparse LU (s, `Phase-field
+   *    preconditioner`). The preconditioner is rebuilt on every solve.
    */
   class LinearSolver
   {
@@ -28,7 +44,10 @@ namespace DuctileContact
     LinearSolver(const LinearSolverParameters &parameters,
                  const Discretisation         &discretisation);
 
-    /// Recomputes the rigid-body modes; call after every DoF distribution.
+    /**
+     * Recomputes the rigid-body modes and forgets the pattern of the
+     * monolithic copy; call after every DoF distribution.
+     */
     void
     setup();
 
@@ -39,10 +58,66 @@ namespace DuctileContact
           const dealii::TrilinosWrappers::MPI::BlockVector  &b);
 
   private:
+    /// The displacement block alone (alpha and s empty).
+    unsigned int
+    solve_displacement(const dealii::TrilinosWrappers::BlockSparseMatrix &K,
+                       dealii::TrilinosWrappers::MPI::BlockVector        &x,
+                       const dealii::TrilinosWrappers::MPI::BlockVector  &b);
+
+    /// Amesos on the monolithic copy of the coupled system.
+    unsigned int
+    solve_coupled_direct(const dealii::TrilinosWrappers::BlockSparseMatrix &K,
+                         dealii::TrilinosWrappers::MPI::BlockVector        &x,
+                         const dealii::TrilinosWrappers::MPI::BlockVector  &b);
+
+    /// GMRES with the block lower-triangular preconditioner.
+    unsigned int
+    solve_coupled_iterative(
+      const dealii::TrilinosWrappers::BlockSparseMatrix &K,
+      dealii::TrilinosWrappers::MPI::BlockVector        &x,
+      const dealii::TrilinosWrappers::MPI::BlockVector  &b);
+
+    /// ML AMG of the displacement block with the rigid-body modes.
+    void
+    initialize_displacement_amg(
+      const dealii::TrilinosWrappers::SparseMatrix &A,
+      dealii::TrilinosWrappers::PreconditionAMG    &amg) const;
+
+    /// Builds #monolithic (pattern and copy positions) from the blocks of K.
+    void
+    make_monolithic_pattern(
+      const dealii::TrilinosWrappers::BlockSparseMatrix &K);
+
     const LinearSolverParameters &parameters;
     const Discretisation         &discretisation;
 
     /// Rigid-body modes on the locally owned displacement DoFs.
     std::unique_ptr<Epetra_MultiVector> rigid_body_modes;
+
+    /**
+     * The coupled system as one matrix and two vectors over the global DoF
+     * indices (locally_owned_dofs), for Amesos. Blocks (I, J) are indexed
+     * 3 I + J.
+     */
+    struct Monolithic
+    {
+      dealii::TrilinosWrappers::SparseMatrix matrix;
+      dealii::TrilinosWrappers::MPI::Vector  x, b;
+
+      /// The block matrices the pattern was built from, and their number of
+      /// local entries: a tangent re-created with another pattern is noticed.
+      std::array<const Epetra_CrsMatrix *, 9> source{};
+      std::array<int, 9>                      source_entries{};
+
+      /// Local row of #matrix (and local index of x and b) for each local
+      /// row of block row I.
+      std::array<std::vector<int>, 3> row;
+
+      /// For each local entry of block (I, J), in the order of its rows and
+      /// of Epetra_CrsMatrix::ExtractMyRowView, the position in the row of
+      /// #matrix that receives it.
+      std::array<std::vector<int>, 9> position;
+    };
+    std::unique_ptr<Monolithic> monolithic;
   };
 } // namespace DuctileContact

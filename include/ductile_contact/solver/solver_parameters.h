@@ -44,7 +44,11 @@ namespace DuctileContact
     check() const;
   };
 
-  /// Subsection `Linear solver`.
+  /**
+   * Subsection `Linear solver`. With alpha or s unknowns the iterative types
+   * solve the coupled [u | alpha | s] system with GMRES and a block
+   * lower-triangular preconditioner (see LinearSolver).
+   */
   struct LinearSolverParameters
   {
     /// direct | cg-amg | gmres-amg
@@ -55,6 +59,8 @@ namespace DuctileContact
     unsigned int max_iterations        = 2000;
     double       aggregation_threshold = 1.e-4;
     unsigned int smoother_sweeps       = 2;
+    /// amg | direct: approximate inverse of the s-s block (coupled systems).
+    std::string phase_field_preconditioner = "amg";
 
     void
     declare(dealii::ParameterHandler &prm);
