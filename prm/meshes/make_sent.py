@@ -1,0 +1,120 @@
+#!/usr/bin/env python3
+"""Writes a single-edge-notched tension (SENT) specimen as a Gmsh 2.2 ASCII
+hexahedral mesh: the unit square [0, 1]^2 mm (written in metres) as a thin
+slab of thickness t with one element layer, and a slit (duplicated nodes)
+along y = 0.5 from the left edge x = 0 to the centre x = 0.5 (validation.md
+rung 8, Miehe et al. 2010).
+
+Elements are h (in mm) wide along the crack path (x >= 0.5 - band, |y - 0.5|
+<= band) and grow geometrically (ratio <= 1.25) away from it, so that the
+phase field is resolved where the crack runs without hanging nodes.
+
+Physical tags: volume 1 (the specimen); surfaces 1 bottom (y = 0), 2 top
+(y = 1), 3 the slab faces z = 0 and z = t, 4 the left and right edges and
+the slit faces (traction free).
+
+Usage: make_sent.py H BAND OUTPUT.msh   (e.g. make_sent.py 0.0075 0.05 sent.msh)
+"""
+import sys
+
+h = float(sys.argv[1]) if len(sys.argv) > 1 else 0.0075
+band = float(sys.argv[2]) if len(sys.argv) > 2 else 0.05
+out = sys.argv[3] if len(sys.argv) > 3 else "sent.msh"
+mm = 1e-3
+thickness = h
+
+
+def graded(a, b, h_fine, fine_from_a):
+    """Points from a to b, spacing h_fine at the fine end, growing by at
+    most 1.25 per element towards the other end."""
+    length = b - a
+    sizes = []
+    size, total = h_fine, 0.0
+    while total + size < length - 1e-12:
+        sizes.append(size)
+        total += size
+        size = min(size * 1.25, 0.1)
+    # stretch the sizes to fill the interval exactly
+    scale = length / sum(sizes) if sizes else 1.0
+    sizes = [s * scale for s in sizes] if sizes else [length]
+    if not fine_from_a:
+        sizes = sizes[::-1]
+    pts = [a]
+    for s in sizes:
+        pts.append(pts[-1] + s)
+    pts[-1] = b
+    return pts
+
+
+def uniform(a, b, h_fine):
+    n = max(1, round((b - a) / h_fine))
+    return [a + (b - a) * i / n for i in range(n + 1)]
+
+
+# x: graded up to 0.5 - band, uniform (fine) to 1
+x0 = 0.5 - band
+xs = graded(0.0, x0, h, False)[:-1] + uniform(x0, 1.0, h)
+# y: uniform in the band around 0.5 (which is a grid line), graded outside
+ylo = graded(0.0, 0.5 - band, h, False)[:-1] + uniform(0.5 - band, 0.5, h)
+yhi = uniform(0.5, 0.5 + band, h)[1:] + graded(0.5 + band, 1.0, h, True)[1:]
+ys = ylo + yhi
+zs = [0.0, thickness]
+j_slit = ys.index(0.5)
+nx, ny = len(xs), len(ys)
+
+node_id = {}
+nodes = []
+
+
+def node(i, j, k, upper):
+    """Node at grid point (i, j, k); on the slit (j = j_slit, x < 0.5) the
+    upper side gets its own copy."""
+    dup = upper and j == j_slit and xs[i] < 0.5 - 1e-12
+    key = (i, j, k, dup)
+    if key not in node_id:
+        node_id[key] = len(nodes) + 1
+        nodes.append((xs[i] * mm, ys[j] * mm, zs[k] * mm))
+    return node_id[key]
+
+
+elements = []
+for j in range(ny - 1):
+    upper = j >= j_slit
+    for i in range(nx - 1):
+        v = [node(i, j, 0, upper), node(i + 1, j, 0, upper),
+             node(i + 1, j + 1, 0, upper), node(i, j + 1, 0, upper)]
+        v += [node(i, j, 1, upper), node(i + 1, j, 1, upper),
+              node(i + 1, j + 1, 1, upper), node(i, j + 1, 1, upper)]
+        elements.append((5, 1, v))
+        # slab faces
+        elements.append((3, 3, v[:4]))
+        elements.append((3, 3, v[4:]))
+        if j == 0:
+            elements.append((3, 1, [v[0], v[1], v[5], v[4]]))
+        if j == ny - 2:
+            elements.append((3, 2, [v[3], v[2], v[6], v[7]]))
+        if i == 0:
+            elements.append((3, 4, [v[0], v[3], v[7], v[4]]))
+        if i == nx - 2:
+            elements.append((3, 4, [v[1], v[2], v[6], v[5]]))
+        # slit faces: the bottom of the upper row and the top of the lower row
+        if xs[i + 1] <= 0.5 + 1e-12:
+            if j == j_slit:
+                elements.append((3, 4, [v[0], v[1], v[5], v[4]]))
+            if j == j_slit - 1:
+                elements.append((3, 4, [v[3], v[2], v[6], v[7]]))
+
+with open(out, "w") as f:
+    f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
+    f.write('$PhysicalNames\n5\n2 1 "bottom"\n2 2 "top"\n2 3 "slab faces"\n'
+            '2 4 "free edges and slit"\n3 1 "specimen"\n$EndPhysicalNames\n')
+    f.write(f"$Nodes\n{len(nodes)}\n")
+    for n, (x, y, z) in enumerate(nodes, start=1):
+        f.write(f"{n} {x:.15g} {y:.15g} {z:.15g}\n")
+    f.write("$EndNodes\n")
+    f.write(f"$Elements\n{len(elements)}\n")
+    for e, (etype, tag, v) in enumerate(elements, start=1):
+        f.write(f"{e} {etype} 2 {tag} {tag} " + " ".join(map(str, v)) + "\n")
+    f.write("$EndElements\n")
+print(f"{out}: {len([e for e in elements if e[0] == 5])} hexahedra, "
+      f"{len(nodes)} nodes, h = {h} mm along the crack path")
