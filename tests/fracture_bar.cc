@@ -19,8 +19,8 @@ using namespace DuctileContact;
 namespace
 {
   const double mu = 1., kappa = 2.5;
-  const double E  = 9. * kappa * mu / (3. * kappa + mu);
-  const double l  = 1.;
+  const double E = 9. * kappa * mu / (3. * kappa + mu);
+  const double l = 1.;
   // g_c such that the peak strain is 1e-3: eps_c^2 = g_c / (6 l E).
   const double g_c = 6. * l * E * 1e-6;
 
@@ -101,8 +101,8 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out = Testing::open_output();
-  const double sigma_c = 9. / 16. * std::sqrt(E * g_c / (6. * l));
-  const std::string pull = "0.0025*t";
+  const double      sigma_c = 9. / 16. * std::sqrt(E * g_c / (6. * l));
+  const std::string pull    = "0.0025*t";
 
   // Rung 7, rate independent, monolithic and staggered.
   const auto mono =
@@ -121,10 +121,10 @@ main(int argc, char **argv)
   bool   same_steps = mono.at("time") == stag.at("time");
   double worst      = 0;
   for (unsigned int n = 0; same_steps && n < mono.at("time").size(); ++n)
-    worst = std::max({worst,
-                      std::abs(mono.at("F1_x")[n] - stag.at("F1_x")[n]) /
-                        peak_mono,
-                      std::abs(mono.at("max_s")[n] - stag.at("max_s")[n])});
+    worst =
+      std::max({worst,
+                std::abs(mono.at("F1_x")[n] - stag.at("F1_x")[n]) / peak_mono,
+                std::abs(mono.at("max_s")[n] - stag.at("max_s")[n])});
   out << "staggered = monolithic (same steps, force and s to 1e-6): "
       << Testing::yes_no(same_steps && worst < 1e-6) << std::endl;
   unsigned int it_mono = 0, it_stag = 0, alternations = 0;
@@ -137,8 +137,8 @@ main(int argc, char **argv)
     }
   std::cout << "difference " << worst << "; Newton iterations: monolithic "
             << it_mono << ", staggered " << it_stag << " in " << alternations
-            << " alternations over " << stag.at("time").size() - 1
-            << " steps" << std::endl;
+            << " alternations over " << stag.at("time").size() - 1 << " steps"
+            << std::endl;
 
   // Viscosity raises the peak.
   const auto viscous =
@@ -152,12 +152,12 @@ main(int argc, char **argv)
   const std::string cycle =
     "0.0025*if(t < 0.4, 2*t, if(t < 0.6, 0.8 - 3*(t - 0.4), "
     "0.2 + 2*(t - 0.6)))";
-  const auto   c = Testing::run_scene(bar_prm("monolithic", 0., cycle, 0.025),
-                                    "bar_cycle");
-  double       min_change = 0;
-  double       s_unload = 0, s_reloaded = 0;
-  bool         elastic  = true;
-  double       secant   = 0;
+  const auto c =
+    Testing::run_scene(bar_prm("monolithic", 0., cycle, 0.025), "bar_cycle");
+  double min_change = 0;
+  double s_unload = 0, s_reloaded = 0;
+  bool   elastic = true;
+  double secant  = 0;
   for (unsigned int n = 1; n < c.at("time").size(); ++n)
     {
       const double t = c.at("time")[n];
@@ -168,9 +168,9 @@ main(int argc, char **argv)
           secant   = c.at("F1_x")[n] / c.at("u1_x")[n];
         }
       if (t > 0.4 + 1e-9 && t < 0.6 + 1e-9)
-        elastic = elastic && std::abs(c.at("max_s")[n] - s_unload) < 1e-10 &&
-                  std::abs(c.at("F1_x")[n] / c.at("u1_x")[n] - secant) <
-                    1e-2 * secant;
+        elastic =
+          elastic && std::abs(c.at("max_s")[n] - s_unload) < 1e-10 &&
+          std::abs(c.at("F1_x")[n] / c.at("u1_x")[n] - secant) < 1e-2 * secant;
       if (t > 0.6 + 1e-9 && t < 0.8 - 1e-9)
         s_reloaded = std::max(s_reloaded, c.at("max_s")[n]);
     }

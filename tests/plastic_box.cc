@@ -74,9 +74,9 @@ end
   hardening_energy(const double alpha, const PlasticityParameters &p)
   {
     const double eta = p.saturation_exponent;
-    return p.initial_yield * alpha + (p.saturation_yield - p.initial_yield) *
-                                       (alpha - (1. - std::exp(-eta * alpha)) /
-                                                  eta);
+    return p.initial_yield * alpha +
+           (p.saturation_yield - p.initial_yield) *
+             (alpha - (1. - std::exp(-eta * alpha)) / eta);
   }
 } // namespace
 
@@ -100,7 +100,7 @@ main(int argc, char **argv)
       double         worst_force = 0, worst_energy = 0;
       for (unsigned int n = 1; n < stats.at("time").size(); ++n)
         {
-          const double lambda = 1. + 0.02 * stats.at("time")[n];
+          const double          lambda = 1. + 0.02 * stats.at("time")[n];
           const PlasticResponse r =
             Testing::uniaxial_plastic_step(lambda, h, stats.at("dt")[n], p);
           h                   = r.updated;
@@ -124,8 +124,7 @@ main(int argc, char **argv)
           << "  hardening energy equals the driver's (1e-6): "
           << Testing::yes_no(worst_energy < 1e-6) << std::endl
           << "  plastic work = hardening energy (1 %): "
-          << Testing::yes_no(std::abs(W_p - Psi_p) < 0.01 * Psi_p)
-          << std::endl;
+          << Testing::yes_no(std::abs(W_p - Psi_p) < 0.01 * Psi_p) << std::endl;
       std::cout << "dt " << dt << " worst force " << worst_force
                 << " worst energy " << worst_energy << " W_p " << W_p
                 << " Psi_p " << Psi_p << " residual " << residual[k]

@@ -140,10 +140,11 @@ main()
         for (unsigned int n = 1; n <= 100; ++n)
           {
             const double          lambda = 1. + 0.0002 * n;
-            const PlasticResponse r      = Testing::uniaxial_plastic_step(lambda, h, dt, q);
-            h                            = r.updated;
-            const double eps             = std::log(lambda);
-            const double sigma           = r.tau[0][0];
+            const PlasticResponse r =
+              Testing::uniaxial_plastic_step(lambda, h, dt, q);
+            h                  = r.updated;
+            const double eps   = std::log(lambda);
+            const double sigma = r.tau[0][0];
             if (k == 1 && n % 25 == 0)
               {
                 const double ref = reference_stress(eps, q);
@@ -176,8 +177,9 @@ main()
         r = Testing::uniaxial_plastic_step(1. + 0.0002 * n, h, 0.01, p);
         h = r.updated;
       }
-    const PlasticResponse u = Testing::uniaxial_plastic_step(1. + 0.0002 * 49, h, 0.01, p);
-    const double          E = 9. * p.bulk_modulus * p.shear_modulus /
+    const PlasticResponse u =
+      Testing::uniaxial_plastic_step(1. + 0.0002 * 49, h, 0.01, p);
+    const double E = 9. * p.bulk_modulus * p.shear_modulus /
                      (3. * p.bulk_modulus + p.shear_modulus);
     const double slope = (r.tau[0][0] - u.tau[0][0]) / 0.0002;
     std::cout << "unloading: yielding " << u.yielding << " dalpha "

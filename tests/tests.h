@@ -122,30 +122,34 @@ namespace Testing
    * the local hardening equation r = 0 (Newton with dr/dalpha).
    */
   inline DuctileContact::PlasticResponse
-  uniaxial_plastic_step(const double                lambda,
-                const DuctileContact::PlasticHistory       &history,
-                const double                dt,
-                const DuctileContact::PlasticityParameters &p)
+  uniaxial_plastic_step(const double                                lambda,
+                        const DuctileContact::PlasticHistory       &history,
+                        const double                                dt,
+                        const DuctileContact::PlasticityParameters &p)
   {
-    const auto solve_alpha = [&](const dealii::Tensor<2, DuctileContact::dim> &F) {
-      // Start just above alpha_n (the one-sided derivative of the flow).
-      double          alpha = history.alpha + 1e-12;
-      DuctileContact::PlasticResponse r = DuctileContact::plastic_update(F, history, alpha, 0., dt, p, true);
-      if (!r.yielding) // elastic: r = eta_p (alpha - alpha_n)/dt = 0
-        return DuctileContact::plastic_update(F, history, history.alpha, 0., dt, p, true);
-      for (unsigned int it = 0; it < 50 && r.yielding; ++it)
-        {
-          alpha = std::max(history.alpha + 1e-12, alpha - r.r / r.dr_dalpha);
-          r     = DuctileContact::plastic_update(F, history, alpha, 0., dt, p, true);
-          if (std::abs(r.r) < 1e-14)
-            break;
-        }
-      return r;
-    };
+    const auto solve_alpha =
+      [&](const dealii::Tensor<2, DuctileContact::dim> &F) {
+        // Start just above alpha_n (the one-sided derivative of the flow).
+        double                          alpha = history.alpha + 1e-12;
+        DuctileContact::PlasticResponse r =
+          DuctileContact::plastic_update(F, history, alpha, 0., dt, p, true);
+        if (!r.yielding) // elastic: r = eta_p (alpha - alpha_n)/dt = 0
+          return DuctileContact::plastic_update(
+            F, history, history.alpha, 0., dt, p, true);
+        for (unsigned int it = 0; it < 50 && r.yielding; ++it)
+          {
+            alpha = std::max(history.alpha + 1e-12, alpha - r.r / r.dr_dalpha);
+            r     = DuctileContact::plastic_update(
+              F, history, alpha, 0., dt, p, true);
+            if (std::abs(r.r) < 1e-14)
+              break;
+          }
+        return r;
+      };
     double lo = 0.5, hi = 1.5;
     for (unsigned int i = 0; i < 60; ++i)
       {
-        const double   mid = 0.5 * (lo + hi);
+        const double                           mid = 0.5 * (lo + hi);
         dealii::Tensor<2, DuctileContact::dim> F;
         F[0][0] = lambda;
         F[1][1] = F[2][2]                        = mid;

@@ -18,30 +18,29 @@ namespace DuctileContact
     PointResponse r;
     if (body.plasticity)
       {
-        const PlasticResponse p =
-          plastic_update(F,
-                         history_n,
-                         alpha,
-                         body.fracture ? s : 0.,
-                         dt,
-                         body.material(),
-                         with_tangent);
-        r.J                = p.J;
-        r.psi_elastic      = p.psi_elastic;
-        r.psi_plus         = p.psi_plus;
-        r.tau              = p.tau;
-        r.P                = p.P;
-        r.dP_dF            = p.dP_dF;
-        r.dP_dalpha        = p.dP_dalpha;
-        r.dP_ds            = p.dP_ds;
-        r.r                = p.r;
-        r.dr_dalpha        = p.dr_dalpha;
-        r.dr_ds            = p.dr_ds;
-        r.dr_dF            = p.dr_dF;
-        r.yielding         = p.yielding;
-        r.dpsi_plus_dF     = p.dpsi_plus_dF;
-        r.dpsi_plus_dalpha = p.dpsi_plus_dalpha;
-        r.updated          = p.updated;
+        const PlasticResponse p = plastic_update(F,
+                                                 history_n,
+                                                 alpha,
+                                                 body.fracture ? s : 0.,
+                                                 dt,
+                                                 body.material(),
+                                                 with_tangent);
+        r.J                     = p.J;
+        r.psi_elastic           = p.psi_elastic;
+        r.psi_plus              = p.psi_plus;
+        r.tau                   = p.tau;
+        r.P                     = p.P;
+        r.dP_dF                 = p.dP_dF;
+        r.dP_dalpha             = p.dP_dalpha;
+        r.dP_ds                 = p.dP_ds;
+        r.r                     = p.r;
+        r.dr_dalpha             = p.dr_dalpha;
+        r.dr_ds                 = p.dr_ds;
+        r.dr_dF                 = p.dr_dF;
+        r.yielding              = p.yielding;
+        r.dpsi_plus_dF          = p.dpsi_plus_dF;
+        r.dpsi_plus_dalpha      = p.dpsi_plus_dalpha;
+        r.updated               = p.updated;
       }
     else if (body.fracture)
       {

@@ -28,5 +28,6 @@ namespace DuctileContact
 
   void
   CouplingParameters::check() const
-  {}
+  {
+  }
 } // namespace DuctileContact

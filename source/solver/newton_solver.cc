@@ -82,7 +82,7 @@ namespace DuctileContact
                                              Utilities::MPI::this_mpi_process(
                                                comm));
       }
-        // Constrained rows get a diagonal entry in distribute_local_to_global(),
+    // Constrained rows get a diagonal entry in distribute_local_to_global(),
     // also from face terms assembled on a ghost neighbour's DoFs, whose
     // diagonal the flux pattern of this rank does not hold.
     for (const auto i : discretisation.locally_relevant_dofs)
@@ -206,36 +206,35 @@ namespace DuctileContact
     // nothing about the rate, so the rate stays undefined (nan) when fewer
     // than three residuals lie above it.
     Norms      reference{};
-    const auto converged = [&](const Norms        &n,
-                               const double        f_int_norm,
-                               const AssemblyInfo &info) {
-      report.residual_norms.push_back(merit(n, reference));
-      const Norms tol = tolerances(f_int_norm, info);
-      for (unsigned int b = 0; b < Block::n_blocks; ++b)
-        if (n[b] > tol[b])
-          return false;
-      report.converged = true;
-      Norms floor_norms;
-      for (unsigned int b = 0; b < Block::n_blocks; ++b)
-        floor_norms[b] = frozen[b] ? 0. :
-                                     std::numeric_limits<double>::epsilon() *
-                                       info.residual_magnitude[b];
-      const double floor = merit(floor_norms, reference);
-      const auto  &h     = report.residual_norms;
-      std::size_t  k     = h.size();
-      while (k >= 3 && h[k - 1] <= floor)
-        --k;
-      if (k >= 3 && h[k - 1] > 0 && h[k - 2] > 0 && h[k - 3] > 0 &&
-          h[k - 2] != h[k - 3])
-        report.convergence_rate =
-          std::log(h[k - 1] / h[k - 2]) / std::log(h[k - 2] / h[k - 3]);
-      return true;
-    };
+    const auto converged =
+      [&](const Norms &n, const double f_int_norm, const AssemblyInfo &info) {
+        report.residual_norms.push_back(merit(n, reference));
+        const Norms tol = tolerances(f_int_norm, info);
+        for (unsigned int b = 0; b < Block::n_blocks; ++b)
+          if (n[b] > tol[b])
+            return false;
+        report.converged = true;
+        Norms floor_norms;
+        for (unsigned int b = 0; b < Block::n_blocks; ++b)
+          floor_norms[b] = frozen[b] ? 0.
+                                     : std::numeric_limits<double>::epsilon() *
+                                         info.residual_magnitude[b];
+        const double floor = merit(floor_norms, reference);
+        const auto  &h     = report.residual_norms;
+        std::size_t  k     = h.size();
+        while (k >= 3 && h[k - 1] <= floor)
+          --k;
+        if (k >= 3 && h[k - 1] > 0 && h[k - 2] > 0 && h[k - 3] > 0 &&
+            h[k - 2] != h[k - 3])
+          report.convergence_rate =
+            std::log(h[k - 1] / h[k - 2]) / std::log(h[k - 2] / h[k - 3]);
+        return true;
+      };
 
     const bool coupled = discretisation.dofs_per_block[Block::hardening] +
                            discretisation.dofs_per_block[Block::phase_field] >
                          0;
-    const auto print   = [&](const unsigned int  it,
+    const auto print = [&](const unsigned int  it,
                            const Norms        &n,
                            const double        f_int_norm,
                            const AssemblyInfo &info,
@@ -276,7 +275,7 @@ namespace DuctileContact
             constraints,
             {&tangent, &newton_rhs, &residual, &internal_force});
         }
-                const Norms  n     = block_norms();
+        const Norms  n     = block_norms();
         const double scale = internal_force.block(0).l2_norm();
         const Norms  tol   = tolerances(scale, report.info);
         const double r     = merit(n, tol);
@@ -363,8 +362,7 @@ namespace DuctileContact
         const bool still_pending = pending && step_length < 1.;
         print(it + 1, trial_n, trial_scale, trial_info, still_pending);
         report.iterations = it + 1;
-        if (!still_pending &&
-            converged(trial_n, trial_scale, trial_info))
+        if (!still_pending && converged(trial_n, trial_scale, trial_info))
           {
             report.info = trial_info;
             return report;

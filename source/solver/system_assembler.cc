@@ -52,7 +52,7 @@ namespace DuctileContact
     const Discretisation                                       &discretisation,
     const std::map<types::material_id, const BodyParameters *> &bodies,
     const std::deque<BoundaryCondition> &boundary_conditions)
-            : discretisation(discretisation)
+      : discretisation(discretisation)
       , bodies(bodies)
       , boundary_conditions(boundary_conditions)
       , elastic_values(discretisation.mapping,
@@ -76,9 +76,9 @@ namespace DuctileContact
                     discretisation.mapping[0],
                     discretisation.fe_collection[i],
                     discretisation.face_quadrature[i],
-                    update_gradients | update_hessians |
-                      update_normal_vectors | update_JxW_values) :
-                  nullptr);
+                    update_gradients | update_hessians | update_normal_vectors |
+                      update_JxW_values)
+                : nullptr);
   }
 
 
@@ -282,7 +282,7 @@ namespace DuctileContact
               // Hardening rows, (50).
               if (has_alpha)
                 {
-                  const double l_p     = body.plastic_length_scale;
+                  const double l_p = body.plastic_length_scale;
                   const double gradient_coefficient =
                     m.yielding ? plastic.initial_yield * l_p * l_p : 0.;
                   info.hardening_energy +=
@@ -321,8 +321,8 @@ namespace DuctileContact
                         (std::abs(m.r) + plastic.shear_modulus +
                          plastic.bulk_modulus) *
                           std::abs(a_value[k]) * JxW +
-                        std::abs(gradient_coefficient * (a_grad[k] *
-                                                         grad_alpha[q])) *
+                        std::abs(gradient_coefficient *
+                                 (a_grad[k] * grad_alpha[q])) *
                           JxW;
                       if (!with_tangent)
                         continue;
@@ -434,10 +434,10 @@ namespace DuctileContact
           for (unsigned int i = 0; i < n_dofs; ++i)
             {
               const unsigned int c = fe.system_to_component_index(i).first;
-              info.residual_magnitude[c < dim ? Block::displacement :
-                                      c == Component::hardening ?
-                                                Block::hardening :
-                                                Block::phase_field] +=
+              info.residual_magnitude[c < dim ? Block::displacement
+                                      : c == Component::hardening
+                                        ? Block::hardening
+                                        : Block::phase_field] +=
                 cell_magnitude(i) * cell_magnitude(i);
             }
           info.residual_scale[Block::hardening] += cell_scale_alpha.norm_sqr();
@@ -524,18 +524,18 @@ namespace DuctileContact
                              info.residual_magnitude[Block::hardening],
                              info.residual_magnitude[Block::phase_field]};
     Utilities::MPI::sum(sums, comm, sums);
-    info.stored_energy                       = sums[0];
-    info.hardening_energy                    = sums[1];
-    info.fracture_energy                     = sums[2];
-    info.plastic_work_increment              = sums[3];
-    info.fracture_viscous_work_increment     = sums[4];
-    info.force_magnitude                     = std::sqrt(sums[5]);
+    info.stored_energy                           = sums[0];
+    info.hardening_energy                        = sums[1];
+    info.fracture_energy                         = sums[2];
+    info.plastic_work_increment                  = sums[3];
+    info.fracture_viscous_work_increment         = sums[4];
+    info.force_magnitude                         = std::sqrt(sums[5]);
     info.residual_magnitude[Block::displacement] = info.force_magnitude;
     info.residual_magnitude[Block::hardening]    = std::sqrt(sums[8]);
     info.residual_magnitude[Block::phase_field]  = std::sqrt(sums[9]);
-    info.residual_scale[Block::displacement] = info.force_magnitude;
-    info.residual_scale[Block::hardening]    = std::sqrt(sums[6]);
-    info.residual_scale[Block::phase_field]  = std::sqrt(sums[7]);
+    info.residual_scale[Block::displacement]     = info.force_magnitude;
+    info.residual_scale[Block::hardening]        = std::sqrt(sums[6]);
+    info.residual_scale[Block::phase_field]      = std::sqrt(sums[7]);
     return info;
   }
 

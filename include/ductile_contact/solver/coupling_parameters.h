@@ -19,8 +19,8 @@ namespace DuctileContact
    */
   struct CouplingParameters
   {
-    std::string  strategy                   = "monolithic";
-    unsigned int max_staggered_iterations   = 200;
+    std::string  strategy                 = "monolithic";
+    unsigned int max_staggered_iterations = 200;
 
     void
     declare(dealii::ParameterHandler &prm);

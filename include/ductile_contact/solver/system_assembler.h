@@ -134,7 +134,7 @@ namespace DuctileContact
                    const AssemblyTargets                   &targets,
                    AssemblyInfo                            &info) const;
 
-        const Discretisation &discretisation;
+    const Discretisation &discretisation;
     const std::map<dealii::types::material_id, const BodyParameters *> bodies;
     const std::deque<BoundaryCondition> &boundary_conditions;
 
