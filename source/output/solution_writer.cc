@@ -48,15 +48,20 @@ namespace DuctileContact
                      DataComponentInterpretation::component_is_part_of_vector);
     interpretation.push_back(DataComponentInterpretation::component_is_scalar);
     interpretation.push_back(DataComponentInterpretation::component_is_scalar);
-    // DataOut cannot take a Trilinos block vector with empty blocks (a
-    // scene without alpha or s), and with a flat ghosted Trilinos vector
-    // deal.II 9.4 can hang on 2 ranks in the index-owner exchange it sets up
-    // (seen on the SENT mesh). A serial vector holding this rank's relevant
-    // entries needs no communication (memory: one double per global DoF
-    // per rank).
-    Vector<double> flat(discretisation.dof_handler.n_dofs());
-    for (const auto i : discretisation.locally_relevant_dofs)
-      flat[i] = u(i);
+        // DataOut cannot take a Trilinos block vector with empty blocks (a
+    // scene without alpha or s): hand it one flat ghosted vector instead.
+    // Known problem: on the SENT mesh (prm/sent.prm) on 2 ranks deal.II 9.4
+    // hangs in the index-owner exchange DataOut sets up here (also with a
+    // serial vector); see the notes of issue #3.
+    TrilinosWrappers::MPI::Vector owned(discretisation.locally_owned_dofs,
+                                        tria.get_communicator());
+    for (const auto i : discretisation.locally_owned_dofs)
+      owned[i] = u(i);
+    owned.compress(VectorOperation::insert);
+    TrilinosWrappers::MPI::Vector flat(discretisation.locally_owned_dofs,
+                                       discretisation.locally_relevant_dofs,
+                                       tria.get_communicator());
+    flat = owned;
     data_out.add_data_vector(flat,
                              names,
                              DataOut<dim>::type_dof_data,
