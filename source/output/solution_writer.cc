@@ -50,9 +50,11 @@ namespace DuctileContact
     interpretation.push_back(DataComponentInterpretation::component_is_scalar);
         // DataOut cannot take a Trilinos block vector with empty blocks (a
     // scene without alpha or s): hand it one flat ghosted vector instead.
-    // Known problem: on the SENT mesh (prm/sent.prm) on 2 ranks deal.II 9.4
-    // hangs in the index-owner exchange DataOut sets up here (also with a
-    // serial vector); see the notes of issue #3.
+        // KNOWN BUG (open): with a non-empty alpha or s block on 2 ranks,
+    // deal.II 9.4 hangs in the index-owner exchange (ComputeIndexOwner) that
+    // DataOut sets up for this vector (also for a serial vector); u-only
+    // scenes are fine. Coupled runs on several ranks need Interval = 0 until
+    // this is fixed; see the notes of issues #3 and #4.
     TrilinosWrappers::MPI::Vector owned(discretisation.locally_owned_dofs,
                                         tria.get_communicator());
     for (const auto i : discretisation.locally_owned_dofs)
