@@ -1,5 +1,6 @@
 #include <deal.II/differentiation/ad.h>
 
+#include <ductile_contact/materials/degradation.h>
 #include <ductile_contact/materials/plasticity.h>
 
 namespace DuctileContact
@@ -27,10 +28,9 @@ namespace DuctileContact
     Number
     degradation_of(const Number &s, const PlasticityParameters &p)
     {
-      const Number d = 1. - s;
-      const Number g =
-        p.degradation_a * (d * d * d - d * d) - 2. * d * d * d + 3. * d * d;
-      return (1. - p.residual_stiffness) * g + p.residual_stiffness;
+      return degradation_value(s,
+                               DegradationParameters{p.degradation_a,
+                                                     p.residual_stiffness});
     }
 
     template <typename Number>
@@ -133,14 +133,6 @@ namespace DuctileContact
   hardening_stress(const double alpha, const PlasticityParameters &p)
   {
     return hardening_of(alpha, p);
-  }
-
-
-
-  double
-  degradation(const double s, const PlasticityParameters &p)
-  {
-    return degradation_of(s, p);
   }
 
 

@@ -48,9 +48,9 @@ namespace DuctileContact
                      DataComponentInterpretation::component_is_part_of_vector);
     interpretation.push_back(DataComponentInterpretation::component_is_scalar);
     interpretation.push_back(DataComponentInterpretation::component_is_scalar);
-        // DataOut cannot take a Trilinos block vector with empty blocks (a
+    // DataOut cannot take a Trilinos block vector with empty blocks (a
     // scene without alpha or s): hand it one flat ghosted vector instead.
-        // KNOWN BUG (open): with a non-empty alpha or s block on 2 ranks,
+    // KNOWN BUG (open): with a non-empty alpha or s block on 2 ranks,
     // deal.II 9.4 hangs in the index-owner exchange (ComputeIndexOwner) that
     // DataOut sets up for this vector (also for a serial vector); u-only
     // scenes are fine. Coupled runs on several ranks need Interval = 0 until

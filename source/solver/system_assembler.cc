@@ -195,7 +195,7 @@ namespace DuctileContact
           grad_u_old.assign(n_q, Tensor<2, dim>());
           if (has_alpha)
             {
-              if (step.old_solution)
+              if (step.old_solution && targets.history)
                 fe_values[discretisation.displacement].get_function_gradients(
                   *step.old_solution, grad_u_old);
               fe_values[discretisation.hardening].get_function_values(u, alpha);
@@ -293,20 +293,22 @@ namespace DuctileContact
                   // Plastic work of the step: the elastic energy the flow
                   // C^p_n -> C^p releases, averaged over F_n and F (second
                   // order in dt; together with the trapezoidal external
-                  // work the energy balance then closes as dt -> 0).
-                  {
-                    const SymmetricTensor<2, dim> &C_n =
-                      history_n[q]->plastic.Cp_inv;
-                    const Tensor<2, dim> F_n =
-                      Physics::Elasticity::StandardTensors<dim>::I +
-                      grad_u_old[q];
-                    info.plastic_work_increment +=
-                      0.5 *
-                      (elastic_energy(F, C_n, s[q], plastic) - m.psi_elastic +
-                       elastic_energy(F_n, C_n, s[q], plastic) -
-                       elastic_energy(F_n, m.updated.Cp_inv, s[q], plastic)) *
-                      JxW;
-                  }
+                  // work the energy balance then closes as dt -> 0). Only
+                  // needed when the step is committed.
+                  if (history_new)
+                    {
+                      const SymmetricTensor<2, dim> &C_n =
+                        history_n[q]->plastic.Cp_inv;
+                      const Tensor<2, dim> F_n =
+                        Physics::Elasticity::StandardTensors<dim>::I +
+                        grad_u_old[q];
+                      info.plastic_work_increment +=
+                        0.5 *
+                        (elastic_energy(F, C_n, s[q], plastic) - m.psi_elastic +
+                         elastic_energy(F_n, C_n, s[q], plastic) -
+                         elastic_energy(F_n, m.updated.Cp_inv, s[q], plastic)) *
+                        JxW;
+                    }
                   for (unsigned int k = 0; k < n_a; ++k)
                     {
                       const unsigned int i = a_dofs[k];

@@ -29,9 +29,7 @@ namespace DuctileContact
   double
   hardening_stress(const double alpha, const PlasticityParameters &p);
 
-  /// Degradation g_k(s) = (1 - k) g(s) + k, model.md section 2.
-  double
-  degradation(const double s, const PlasticityParameters &p);
+
 
   /**
    * Degraded elastic energy Psi^e (16) of the state (F, (C^p)^{-1}, s):

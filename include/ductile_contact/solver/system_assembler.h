@@ -39,7 +39,8 @@ namespace DuctileContact
     /// int Psi^e(F, C^p_n) - Psi^e(F, C^p) dV (= int tau : d^p dt to first
     /// order in dt; exactly consistent with Psi^e, so that the energy
     /// balance closes as dt -> 0), and the viscous dissipation of the
-    /// phase field int eta_f (s - s_n)^2/dt.
+    /// phase field int eta_f (s - s_n)^2/dt. The plastic work is only
+    /// computed when the history is committed (AssemblyTargets::history).
     double plastic_work_increment          = 0.;
     double fracture_viscous_work_increment = 0.;
     /// Size of the terms summed into f_int: sqrt of the sum over cells and
