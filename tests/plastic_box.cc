@@ -10,8 +10,12 @@
 //  - the plastic work equals the hardening energy up to the viscous part
 //    (eta_p is small here) and the O(elastic strain) = O(y0/mu) = 0.5 %
 //    by which the update (37) is not energy-consistent: within 1 %.
+// - graphical output is written on every rank count (one .vtu piece per
+//   rank in the last step's record).
 // Run on 1 and 2 MPI ranks with identical output.
 #include "tests.h"
+
+#include <iterator>
 
 using namespace dealii;
 using namespace DuctileContact;
@@ -64,7 +68,7 @@ subsection Newton
   set Relative tolerance = 1e-11
 end
 subsection Output
-  set Interval = 0
+  set Interval = 5
 end
 )";
   }
@@ -130,6 +134,28 @@ main(int argc, char **argv)
                 << " Psi_p " << Psi_p << " residual " << residual[k]
                 << " W_ext " << stats.at("external_work")[last] << std::endl;
     }
+  // Graphical output of a scene with an alpha block, on every rank count
+  // (this hung on 2 ranks once): the last step's record names one piece per
+  // rank and every piece exists.
+  {
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    std::ifstream      record("plastic_box_1/solution_00020.pvtu");
+    const std::string  text((std::istreambuf_iterator<char>(record)),
+                           std::istreambuf_iterator<char>());
+    unsigned int pieces = 0, present = 0;
+    for (std::size_t at = text.find("<Piece Source=\""); at != std::string::npos;
+         at = text.find("<Piece Source=\"", at + 1))
+      {
+        ++pieces;
+        const std::size_t begin = at + 15, end = text.find('"', begin);
+        present += std::ifstream("plastic_box_1/" +
+                                 text.substr(begin, end - begin))
+                     .good();
+      }
+    out << "output of the last step: one piece per rank, all written: "
+        << Testing::yes_no(pieces == n_ranks && present == n_ranks)
+        << std::endl;
+  }
   const double ratio = residual[0] / residual[1];
   out << "energy residual shrinks as dt^2 (ratio 4 +- 0.4): "
       << Testing::yes_no(std::abs(ratio - 4.) < 0.4) << std::endl;

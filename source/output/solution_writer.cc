@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_values.h>
+#include <deal.II/lac/la_parallel_block_vector.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <ductile_contact/output/solution_writer.h>
@@ -48,23 +49,31 @@ namespace DuctileContact
                      DataComponentInterpretation::component_is_part_of_vector);
     interpretation.push_back(DataComponentInterpretation::component_is_scalar);
     interpretation.push_back(DataComponentInterpretation::component_is_scalar);
-    // DataOut cannot take a Trilinos block vector with empty blocks (a
-    // scene without alpha or s): hand it one flat ghosted vector instead.
-    // KNOWN BUG (open): with a non-empty alpha or s block on 2 ranks,
-    // deal.II 9.4 hangs in the index-owner exchange (ComputeIndexOwner) that
-    // DataOut sets up for this vector (also for a serial vector); u-only
-    // scenes are fine. Coupled runs on several ranks need Interval = 0 until
-    // this is fixed; see the notes of issues #3 and #4.
-    TrilinosWrappers::MPI::Vector owned(discretisation.locally_owned_dofs,
-                                        tria.get_communicator());
-    for (const auto i : discretisation.locally_owned_dofs)
-      owned[i] = u(i);
-    owned.compress(VectorOperation::insert);
-    TrilinosWrappers::MPI::Vector flat(discretisation.locally_owned_dofs,
-                                       discretisation.locally_relevant_dofs,
-                                       tria.get_communicator());
-    flat = owned;
-    data_out.add_data_vector(flat,
+    // DataOut needs, per vector block, one contiguous range of owned DoFs on
+    // each rank (deal.II 9.4 builds a partitioner from it and, given the
+    // several ranges of a component-wise numbered flat vector, hangs in the
+    // index-owner exchange on several ranks). Each of our blocks is
+    // contiguous per rank, so hand it a ghosted block vector of the
+    // non-empty blocks (empty blocks are dropped: DataOut splits by block
+    // size, and an empty block covers no DoF).
+    LinearAlgebra::distributed::BlockVector<double> ghosted;
+    std::vector<unsigned int>                       present;
+    for (unsigned int b = 0; b < Block::n_blocks; ++b)
+      if (discretisation.dofs_per_block[b] > 0)
+        present.push_back(b);
+    ghosted.reinit(present.size());
+    for (unsigned int k = 0; k < present.size(); ++k)
+      {
+        const unsigned int b = present[k];
+        ghosted.block(k).reinit(discretisation.owned_partitioning[b],
+                                discretisation.relevant_partitioning[b],
+                                tria.get_communicator());
+        for (const auto i : discretisation.owned_partitioning[b])
+          ghosted.block(k)[i] = u.block(b)[i];
+      }
+    ghosted.collect_sizes();
+    ghosted.update_ghost_values();
+    data_out.add_data_vector(ghosted,
                              names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
