@@ -138,19 +138,21 @@ main(int argc, char **argv)
   // (this hung on 2 ranks once): the last step's record names one piece per
   // rank and every piece exists.
   {
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-    std::ifstream      record("plastic_box_1/solution_00020.pvtu");
-    const std::string  text((std::istreambuf_iterator<char>(record)),
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    std::ifstream     record("plastic_box_1/solution_00020.pvtu");
+    const std::string text((std::istreambuf_iterator<char>(record)),
                            std::istreambuf_iterator<char>());
-    unsigned int pieces = 0, present = 0;
-    for (std::size_t at = text.find("<Piece Source=\""); at != std::string::npos;
+    unsigned int      pieces = 0, present = 0;
+    for (std::size_t at = text.find("<Piece Source=\"");
+         at != std::string::npos;
          at = text.find("<Piece Source=\"", at + 1))
       {
         ++pieces;
         const std::size_t begin = at + 15, end = text.find('"', begin);
-        present += std::ifstream("plastic_box_1/" +
-                                 text.substr(begin, end - begin))
-                     .good();
+        present +=
+          std::ifstream("plastic_box_1/" + text.substr(begin, end - begin))
+            .good();
       }
     out << "output of the last step: one piece per rank, all written: "
         << Testing::yes_no(pieces == n_ranks && present == n_ranks)

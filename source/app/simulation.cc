@@ -407,7 +407,8 @@ namespace DuctileContact
                 << report.convergence_rate << std::defaultfloat
                 << std::setprecision(6);
         if (discretisation->dofs_per_block[Block::phase_field] > 0)
-          pcout << (parameters.coupling.strategy == "staggered"
+          pcout << (parameters.coupling.strategy != "monolithic" &&
+                        report.staggered_iterations > 0
                       ? "  alternations " +
                           std::to_string(report.staggered_iterations)
                       : std::string())

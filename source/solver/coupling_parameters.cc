@@ -12,14 +12,18 @@ namespace DuctileContact
       "Strategy",
       strategy,
       "How the displacement/hardening fields and the phase field are solved "
-      "together: monolithic (Newton with the exact coupled tangent) or "
+      "together: monolithic (Newton with the exact coupled tangent), "
       "staggered (alternate minimisation iterated to the Newton tolerances "
-      "on every field).",
-      Patterns::Selection("monolithic|staggered"));
+      "on every field), or monolithic-staggered (monolithic; a step where "
+      "it fails is redone staggered before the step is cut back: past a "
+      "limit point, e.g. when a crack runs unstably, there is no nearby "
+      "equilibrium for Newton to find, while the alternation walks to the "
+      "cracked state).",
+      Patterns::Selection("monolithic|staggered|monolithic-staggered"));
     prm.add_parameter("Maximum staggered iterations",
                       max_staggered_iterations,
                       "Alternations per load step before the step is cut "
-                      "back (staggered strategy only).",
+                      "back (staggered and monolithic-staggered).",
                       Patterns::Integer(1, 100000));
     prm.leave_subsection();
   }

@@ -108,11 +108,28 @@ namespace DuctileContact
     if (coupling.strategy == "monolithic" || !has_s)
       return solve(step, u, internal_force, {{false, false, false}});
 
+    NewtonReport total;
+    if (coupling.strategy == "monolithic-staggered")
+      {
+        const TrilinosWrappers::MPI::BlockVector start = u;
+        NewtonReport                             r =
+          solve(step, u, internal_force, {{false, false, false}});
+        if (r.converged)
+          {
+            r.staggered_iterations = 0; // Newton alone solved the step
+            return r;
+          }
+        verbose_out << "      monolithic Newton failed (" << r.failure
+                    << "); redoing the step staggered" << std::endl;
+        u                       = start;
+        total.iterations        = r.iterations;
+        total.linear_iterations = r.linear_iterations;
+      }
+
     // Alternate minimisation: (u, alpha) with s fixed, then s with (u,
     // alpha) fixed. Each sub-solve checks its fields before iterating, so
     // a sub-solve that needs no iteration shows that the state it starts
     // from meets the tolerances in every block: the coupled step is done.
-    NewtonReport total;
     for (unsigned int k = 1; k <= coupling.max_staggered_iterations; ++k)
       {
         total.staggered_iterations = k;

@@ -23,7 +23,8 @@ namespace DuctileContact
     bool         converged         = false;
     unsigned int iterations        = 0;
     unsigned int linear_iterations = 0;
-    /// Alternations of the staggered scheme (1 for monolithic).
+    /// Alternations of the staggered scheme (1 for monolithic; 0 for a
+    /// monolithic-staggered step that Newton solved without alternating).
     unsigned int staggered_iterations = 1;
     /// ||R|| of the iterations whose Dirichlet data were reached.
     std::vector<double> residual_norms;
@@ -49,8 +50,8 @@ namespace DuctileContact
    * is relative to the load carried) and ||R_b|| <= rtol S_b for alpha and
    * s (S_b: the local terms at alpha = 1 or s = 1).
    *
-   * solve_step() applies the coupling strategy: monolithic, or staggered
-   * (CouplingParameters).
+   * solve_step() applies the coupling strategy: monolithic, staggered, or
+   * monolithic with a staggered retry of a failed step (CouplingParameters).
    */
   class NewtonSolver
   {
