@@ -113,8 +113,8 @@ main(int argc, char **argv)
   out << std::setprecision(4);
 
   // Monolithic, rate independent (eta_f = 0), through the ligament.
-  const auto mono =
-    Testing::run_scene(sent_prm("monolithic", 0., 0.65, 0.05), "sent_monolithic");
+  const auto mono = Testing::run_scene(sent_prm("monolithic", 0., 0.65, 0.05),
+                                       "sent_monolithic");
   const unsigned int k    = peak(mono);
   const std::size_t  last = mono.at("time").size() - 1;
   // First step after the crack has run through: force below 20 % of the
@@ -142,15 +142,16 @@ main(int argc, char **argv)
             << force(mono, last) << std::endl;
 
   // Staggered, same steps, up to the peak.
-  const auto stag = Testing::run_scene(
-    sent_prm("staggered", 0., mono.at("time")[k], 0.05), "sent_staggered");
-  double       worst = 0;
+  const auto stag =
+    Testing::run_scene(sent_prm("staggered", 0., mono.at("time")[k], 0.05),
+                       "sent_staggered");
+  double       worst        = 0;
   unsigned int alternations = 0, it_stag = 0, it_mono = 0;
   for (unsigned int n = 0; n <= k && n < stag.at("time").size(); ++n)
     {
-      worst = std::max(worst,
-                       std::abs(force(stag, n) - force(mono, n)) /
-                         force(mono, k));
+      worst =
+        std::max(worst,
+                 std::abs(force(stag, n) - force(mono, n)) / force(mono, k));
       alternations += stag.at("staggered_iterations")[n];
       it_stag += stag.at("newton_iterations")[n];
       it_mono += mono.at("newton_iterations")[n];

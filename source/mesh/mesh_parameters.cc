@@ -19,10 +19,12 @@ namespace DuctileContact
       "Which coarse mesh to build. 'box': one body, a brick given in "
       "subsection Box, boundary ids 0..5 on the faces x-, x+, y-, y+, z-, z+. "
       "'two bodies': the plate and block of the paper's scene (model.md "
-      "section 7), see subsection Two bodies for the ids. 'gmsh': a mesh "
+      "section 7), see subsection Two bodies for the ids. 'round bar': the "
+      "necking bar of validation rung 3, see subsection Round bar. 'gmsh': "
+      "a mesh "
       "read from a Gmsh .msh file; physical volume tags become material ids "
       "(bodies), physical surface tags become boundary ids.",
-      Patterns::Selection("box|two bodies|gmsh"));
+      Patterns::Selection("box|two bodies|round bar|gmsh"));
     prm.add_parameter("Global refinements",
                       global_refinements,
                       "Number of uniform refinements of the coarse mesh.",
@@ -79,6 +81,37 @@ namespace DuctileContact
                       "Distance between the plate's top face and the block's "
                       "bottom face [m]; 0 = touching.",
                       Patterns::Double(0.));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Round bar");
+    prm.add_parameter("Radius",
+                      round_bar.radius,
+                      "Radius R of the bar at its ends [m].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Length",
+                      round_bar.length,
+                      "Length L of the bar [m]; axis along x in [0, L]. "
+                      "Boundary ids: 0 = hull, 1 = end x = 0, 2 = end x = L; "
+                      "material id 0.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Imperfection",
+                      round_bar.imperfection,
+                      "Relative reduction of the radius at mid-length "
+                      "(linear taper from the ends), e.g. 0.018 for "
+                      "0.982 R.",
+                      Patterns::Double(0., 0.5));
+    prm.add_parameter("Axial subdivisions",
+                      round_bar.axial_subdivisions,
+                      "Coarse cells along the axis (before Refinements).",
+                      Patterns::Integer(1));
+    prm.add_parameter("Refinements",
+                      round_bar.refinements,
+                      "Uniform refinements of the coarse cylinder (5 cells "
+                      "per cross-section) while its hull is kept round: "
+                      "5 * 4^r cells per cross-section, Axial subdivisions "
+                      "* 2^r along the axis. Mesh/Global refinements would "
+                      "refine the resulting faceted bar instead.",
+                      Patterns::Integer(0, 5));
     prm.leave_subsection();
 
     prm.enter_subsection("Gmsh");
@@ -183,6 +216,13 @@ namespace DuctileContact
                     Utilities::to_string(two_bodies.block_edge),
                     "the block edge must be positive");
       }
+
+    if (scene == "round bar")
+      check_input(round_bar.radius > 0. && round_bar.length > 0.,
+                  "Mesh/Round bar/Radius",
+                  Utilities::to_string(round_bar.radius) + " (Length " +
+                    Utilities::to_string(round_bar.length) + ")",
+                  "radius and length must be positive");
 
     if (scene == "gmsh")
       {

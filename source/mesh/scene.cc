@@ -42,12 +42,14 @@ namespace DuctileContact
       create_box_scene(parameters.box, tria);
     else if (parameters.scene == "two bodies")
       create_two_body_scene(parameters.two_bodies, tria);
+    else if (parameters.scene == "round bar")
+      create_round_bar_scene(parameters.round_bar, tria);
     else if (parameters.scene == "gmsh")
       create_gmsh_scene(parameters.gmsh, tria);
     else
       throw InputError("Mesh/Scene",
                        parameters.scene,
-                       "allowed are: box, two bodies, gmsh");
+                       "allowed are: box, two bodies, round bar, gmsh");
 
     tria.refine_global(parameters.global_refinements);
     refine_boxes(parameters, tria);

@@ -24,7 +24,7 @@ namespace DuctileContact
    */
   struct MeshParameters
   {
-    /// box | two bodies | gmsh
+    /// box | two bodies | round bar | gmsh
     std::string scene = "box";
 
     unsigned int global_refinements = 0;
@@ -52,6 +52,16 @@ namespace DuctileContact
       /// Vertical gap between the plate's top and the block's bottom [m].
       double block_gap = 0.;
     } two_bodies;
+
+    /// Round bar of validation rung 3 (necking), axis along x.
+    struct RoundBar
+    {
+      double       radius             = 6.413e-3;
+      double       length             = 53.334e-3;
+      double       imperfection       = 0.018;
+      unsigned int axial_subdivisions = 10;
+      unsigned int refinements        = 1;
+    } round_bar;
 
     struct Gmsh
     {

@@ -16,7 +16,8 @@ namespace DuctileContact
    * cannot be built (e.g. an unreadable Gmsh file).
    *
    * Each scene lives in a file of its own (box_scene.cc, two_body_scene.cc,
-   * gmsh_scene.cc); nothing outside this folder knows which scene runs.
+   * round_bar_scene.cc, gmsh_scene.cc); nothing outside this folder knows which
+   * scene runs.
    */
   void
   create_scene_mesh(const MeshParameters &parameters,
@@ -36,6 +37,17 @@ namespace DuctileContact
   void
   create_two_body_scene(const MeshParameters::TwoBodies &parameters,
                         dealii::Triangulation<dim>      &tria);
+
+  /**
+   * Round bar along x in [0, L] with a linear taper to (1 - imperfection)
+   * times the radius at mid-length (validation rung 3): material id 0;
+   * boundary ids 0 = hull, 1 = end x = 0, 2 = end x = L. The hull is
+   * rounded while the coarse cylinder (5 cells per cross-section) is
+   * refined; the result becomes the coarse mesh of @p tria.
+   */
+  void
+  create_round_bar_scene(const MeshParameters::RoundBar &parameters,
+                         dealii::Triangulation<dim>     &tria);
 
   /// A Gmsh mesh; physical tags become material and boundary ids.
   void
