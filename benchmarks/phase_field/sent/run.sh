@@ -56,7 +56,7 @@ run() { # degree h_over_lf strategy solver dt
 
 dt=0.02
 # Every method at h = l_f (Q2); the monolithic ones also at h = l_f / 2 (Q2)
-# and h = l_f (Q3). Staggered runs cost 5-10x more and are not repeated on
+# and h = l_f (Q3). Staggered runs cost 6-12x more and are not repeated on
 # the finer meshes.
 for solver in gmres-amg direct; do
   for strategy in monolithic staggered; do run 2 1 "$strategy" "$solver" "$dt"; done
