@@ -194,6 +194,23 @@ namespace DuctileContact
         offset[I] +
         TrilinosWrappers::global_row_index(K.block(I, 0).trilinos_matrix(), r));
     };
+    // Calls f(flat global column) for every entry of local row r of block
+    // row I, block by block (the order the value copy relies on).
+    const auto for_each_column = [&](const unsigned int I,
+                                     const int          r,
+                                     const auto        &f) {
+      for (unsigned int J = 0; J < n_blocks; ++J)
+        {
+          const Epetra_CrsMatrix &A = K.block(I, J).trilinos_matrix();
+          int                     n;
+          double                 *values;
+          int                    *indices;
+          A.ExtractMyRowView(r, n, values, indices);
+          for (int k = 0; k < n; ++k)
+            f(J,
+              offset[J] + TrilinosWrappers::global_column_index(A, indices[k]));
+        }
+    };
     std::vector<int> row_length(map.NumMyElements(), 0);
     for (unsigned int I = 0; I < n_blocks; ++I)
       for (int r = 0; r < K.block(I, 0).trilinos_matrix().NumMyRows(); ++r)
@@ -211,18 +228,11 @@ namespace DuctileContact
       for (int r = 0; r < K.block(I, 0).trilinos_matrix().NumMyRows(); ++r)
         {
           columns.clear();
-          for (unsigned int J = 0; J < n_blocks; ++J)
-            {
-              const Epetra_CrsMatrix &A = K.block(I, J).trilinos_matrix();
-              int                     n;
-              double                 *values;
-              int                    *indices;
-              A.ExtractMyRowView(r, n, values, indices);
-              for (int k = 0; k < n; ++k)
-                columns.push_back(static_cast<int_type>(
-                  offset[J] +
-                  TrilinosWrappers::global_column_index(A, indices[k])));
-            }
+          for_each_column(I,
+                          r,
+                          [&](unsigned int, const types::global_dof_index c) {
+                            columns.push_back(static_cast<int_type>(c));
+                          });
           const int ierr =
             graph.InsertGlobalIndices(row_gid(I, r),
                                       static_cast<int>(columns.size()),
@@ -264,26 +274,17 @@ namespace DuctileContact
               flat_columns[k] = {
                 TrilinosWrappers::global_column_index(flat, findices[k]), k};
             std::sort(flat_columns.begin(), flat_columns.end());
-            for (unsigned int J = 0; J < n_blocks; ++J)
-              {
-                const Epetra_CrsMatrix &A = K.block(I, J).trilinos_matrix();
-                int                     n;
-                double                 *values;
-                int                    *indices;
-                A.ExtractMyRowView(r, n, values, indices);
-                for (int k = 0; k < n; ++k)
-                  {
-                    const types::global_dof_index column =
-                      offset[J] +
-                      TrilinosWrappers::global_column_index(A, indices[k]);
-                    const auto p = std::lower_bound(flat_columns.begin(),
-                                                    flat_columns.end(),
-                                                    std::make_pair(column, -1));
-                    AssertThrow(p != flat_columns.end() && p->first == column,
-                                ExcInternalError());
-                    m.position[n_blocks * I + J].push_back(p->second);
-                  }
-              }
+            for_each_column(
+              I,
+              r,
+              [&](const unsigned int J, const types::global_dof_index column) {
+                const auto p = std::lower_bound(flat_columns.begin(),
+                                                flat_columns.end(),
+                                                std::make_pair(column, -1));
+                AssertThrow(p != flat_columns.end() && p->first == column,
+                            ExcInternalError());
+                m.position[n_blocks * I + J].push_back(p->second);
+              });
           }
       }
 

@@ -44,6 +44,44 @@ namespace DuctileContact
         c.penalty = body.crack.interior_penalty;
       return c;
     }
+
+    /**
+     * Adds one local contribution to every requested target: tangent and
+     * Newton right-hand side -R (condensed with the Newton @p constraints),
+     * the residual R = -@p rhs, and @p f_int condensed with the
+     * @p hanging_nodes constraints only. @p rhs is overwritten.
+     */
+    void
+    scatter(const FullMatrix<double>                   &matrix,
+            Vector<double>                             &rhs,
+            const Vector<double>                       &f_int,
+            const std::vector<types::global_dof_index> &indices,
+            const AffineConstraints<double>            &constraints,
+            const AffineConstraints<double>            &hanging_nodes,
+            const AssemblyTargets                      &targets)
+    {
+      if (targets.tangent)
+        constraints.distribute_local_to_global(
+          matrix, rhs, indices, *targets.tangent, *targets.newton_rhs);
+      else if (targets.newton_rhs)
+        constraints.distribute_local_to_global(rhs,
+                                               indices,
+                                               *targets.newton_rhs);
+      if (targets.residual)
+        {
+          rhs *= -1.;
+          constraints.distribute_local_to_global(rhs,
+                                                 indices,
+                                                 *targets.residual);
+        }
+      // Condensed with the hanging-node constraints only: then the sum of
+      // f_int over the DoFs of a boundary is the force through it even
+      // where the boundary carries hanging nodes.
+      if (targets.internal_force)
+        hanging_nodes.distribute_local_to_global(f_int,
+                                                 indices,
+                                                 *targets.internal_force);
+    }
   } // namespace
 
 
@@ -477,29 +515,13 @@ namespace DuctileContact
                     }
                 }
 
-          if (with_tangent)
-            constraints.distribute_local_to_global(cell_matrix,
-                                                   cell_rhs,
-                                                   dof_indices,
-                                                   *targets.tangent,
-                                                   *targets.newton_rhs);
-          else if (targets.newton_rhs)
-            constraints.distribute_local_to_global(cell_rhs,
-                                                   dof_indices,
-                                                   *targets.newton_rhs);
-          if (targets.residual)
-            {
-              cell_rhs *= -1.;
-              constraints.distribute_local_to_global(cell_rhs,
-                                                     dof_indices,
-                                                     *targets.residual);
-            }
-          // Condensed with the hanging-node constraints only: then the sum
-          // of f_int over the DoFs of a boundary is the force through it
-          // even where the boundary carries hanging nodes.
-          if (targets.internal_force)
-            discretisation.hanging_node_constraints.distribute_local_to_global(
-              cell_f_int, dof_indices, *targets.internal_force);
+          scatter(cell_matrix,
+                  cell_rhs,
+                  cell_f_int,
+                  dof_indices,
+                  constraints,
+                  discretisation.hanging_node_constraints,
+                  targets);
         }
 
     if (discretisation.dofs_per_block[Block::phase_field] > 0)
@@ -606,25 +628,13 @@ namespace DuctileContact
 
             s_rhs = s_f_int;
             s_rhs *= -1.;
-            if (targets.tangent)
-              constraints.distribute_local_to_global(s_matrix,
-                                                     s_rhs,
-                                                     s_indices,
-                                                     *targets.tangent,
-                                                     *targets.newton_rhs);
-            else if (targets.newton_rhs)
-              constraints.distribute_local_to_global(s_rhs,
-                                                     s_indices,
-                                                     *targets.newton_rhs);
-            if (targets.residual)
-              constraints.distribute_local_to_global(s_f_int,
-                                                     s_indices,
-                                                     *targets.residual);
-            if (targets.internal_force)
-              discretisation.hanging_node_constraints
-                .distribute_local_to_global(s_f_int,
-                                            s_indices,
-                                            *targets.internal_force);
+            scatter(s_matrix,
+                    s_rhs,
+                    s_f_int,
+                    s_indices,
+                    constraints,
+                    discretisation.hanging_node_constraints,
+                    targets);
           },
           fe_index);
       }
