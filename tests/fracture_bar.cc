@@ -30,42 +30,16 @@ namespace
           const std::string &displacement,
           const double       dt)
   {
-    return R"(
-subsection Mesh
-  set Scene = box
-  subsection Box
-    set Subdivisions = 2, 2, 2
-  end
-end
-subsection Body 0
-  set Shear modulus = 1
-  set Bulk modulus  = 2.5
-  set Fracture      = true
+    return Testing::unit_cube_prm(R"(  set Fracture      = true
   subsection Fracture
     set Critical energy release rate = )" +
-           Utilities::to_string(g_c, 16) + R"(
+                                  Utilities::to_string(g_c, 16) + R"(
     set Length scale                 = 1
     set Viscosity                    = )" +
-           Utilities::to_string(eta_f) + R"(
+                                  Utilities::to_string(eta_f) + R"(
   end
-end
-subsection Boundary conditions
-  set Boundary ids = 0, 1, 2, 4
-end
-subsection Boundary 0
-  set Constrained components = x
-end
-subsection Boundary 2
-  set Constrained components = y
-end
-subsection Boundary 4
-  set Constrained components = z
-end
-subsection Boundary 1
-  set Constrained components = x
-  set Displacement           = )" +
-           displacement + R"(; 0; 0
-end
+)") + Testing::uniaxial_pull_prm(displacement) +
+           R"(
 subsection Coupling
   set Strategy = )" +
            strategy + R"(

@@ -25,17 +25,7 @@ namespace
   std::string
   cube_prm(const std::string &boundaries, const std::string &solver)
   {
-    return R"(
-subsection Mesh
-  set Scene = box
-  subsection Box
-    set Subdivisions = 2, 2, 2
-  end
-end
-subsection Body 0
-  set Shear modulus = 1
-  set Bulk modulus  = 2.5
-end
+    return Testing::unit_cube_prm() + R"(
 subsection Load stepping
   set End time  = 1
   set Time step = 0.5

@@ -25,40 +25,15 @@ namespace
   std::string
   box_prm(const double dt)
   {
-    return R"(
-subsection Mesh
-  set Scene = box
-  subsection Box
-    set Subdivisions = 2, 2, 2
-  end
-end
-subsection Body 0
-  set Shear modulus = 1
-  set Bulk modulus  = 2.5
-  set Plasticity    = true
+    return Testing::unit_cube_prm(R"(  set Plasticity    = true
   subsection Plasticity
     set Initial yield stress    = 0.005
     set Saturation yield stress = 0.006
     set Saturation exponent     = 25
     set Viscosity               = 1e-6
   end
-end
-subsection Boundary conditions
-  set Boundary ids = 0, 1, 2, 4
-end
-subsection Boundary 0
-  set Constrained components = x
-end
-subsection Boundary 2
-  set Constrained components = y
-end
-subsection Boundary 4
-  set Constrained components = z
-end
-subsection Boundary 1
-  set Constrained components = x
-  set Displacement           = 0.02*t; 0; 0
-end
+)") + Testing::uniaxial_pull_prm("0.02*t") +
+           R"(
 subsection Load stepping
   set End time  = 1
   set Time step = )" +

@@ -79,6 +79,57 @@ namespace Testing
   }
 
   /**
+   * .prm text of the unit cube as 2x2x2 cells of one body (id 0) with
+   * mu = 1, kappa = 2.5; @p body_entries adds entries or subsections to
+   * subsection Body 0 (e.g. Plasticity or Fracture).
+   */
+  inline std::string
+  unit_cube_prm(const std::string &body_entries = "")
+  {
+    return R"(
+subsection Mesh
+  set Scene = box
+  subsection Box
+    set Subdivisions = 2, 2, 2
+  end
+end
+subsection Body 0
+  set Shear modulus = 1
+  set Bulk modulus  = 2.5
+)" + body_entries +
+           "end\n";
+  }
+
+  /**
+   * .prm text of uniaxial tension of the unit cube: symmetry planes x = 0
+   * (id 0), y = 0 (id 2), z = 0 (id 4); the face x = 1 (id 1) moved along x
+   * by @p displacement (an expression in t), free laterally.
+   */
+  inline std::string
+  uniaxial_pull_prm(const std::string &displacement)
+  {
+    return R"(
+subsection Boundary conditions
+  set Boundary ids = 0, 1, 2, 4
+end
+subsection Boundary 0
+  set Constrained components = x
+end
+subsection Boundary 2
+  set Constrained components = y
+end
+subsection Boundary 4
+  set Constrained components = z
+end
+subsection Boundary 1
+  set Constrained components = x
+  set Displacement           = )" +
+           displacement + R"(; 0; 0
+end
+)";
+  }
+
+  /**
    * The file 'output' that the harness compares, open on rank 0 only (other
    * ranks write into a closed stream, i.e. nowhere), 6 significant digits.
    */
