@@ -5,21 +5,27 @@ slab of thickness t with one element layer, and a slit (duplicated nodes)
 along y = 0.5 from the left edge x = 0 to the centre x = 0.5 (validation.md
 rung 8, Miehe et al. 2010).
 
-Elements are h (in mm) wide along the crack path (x >= 0.5 - band, |y - 0.5|
-<= band) and grow geometrically (ratio <= 1.25) away from it, so that the
-phase field is resolved where the crack runs without hanging nodes.
+Elements are h (in mm) wide along the crack path (0.5 - band <= x <= XEND,
+|y - 0.5| <= band) and grow geometrically (ratio <= 1.25) away from it, so
+that the phase field is resolved where the crack runs without hanging nodes.
+XEND = 1 (default) resolves the whole path; XEND = 0.5 + band only a box
+around the notch tip, enough for the peak force as long as the damage zone
+at the peak stays inside the box (check: the peak must not change when the
+box grows).
 
 Physical tags: volume 1 (the specimen); surfaces 1 bottom (y = 0), 2 top
 (y = 1), 3 the slab faces z = 0 and z = t, 4 the left and right edges and
 the slit faces (traction free).
 
-Usage: make_sent.py H BAND OUTPUT.msh   (e.g. make_sent.py 0.0075 0.05 sent.msh)
+Usage: make_sent.py H BAND OUTPUT.msh [XEND]
+       (e.g. make_sent.py 0.0075 0.05 sent.msh)
 """
 import sys
 
 h = float(sys.argv[1]) if len(sys.argv) > 1 else 0.0075
 band = float(sys.argv[2]) if len(sys.argv) > 2 else 0.05
 out = sys.argv[3] if len(sys.argv) > 3 else "sent.msh"
+x_end = float(sys.argv[4]) if len(sys.argv) > 4 else 1.0
 mm = 1e-3
 thickness = h
 
@@ -51,9 +57,11 @@ def uniform(a, b, h_fine):
     return [a + (b - a) * i / n for i in range(n + 1)]
 
 
-# x: graded up to 0.5 - band, uniform (fine) to 1
+# x: graded up to 0.5 - band, uniform (fine) to x_end, graded to 1
 x0 = 0.5 - band
-xs = graded(0.0, x0, h, False)[:-1] + uniform(x0, 1.0, h)
+xs = graded(0.0, x0, h, False)[:-1] + uniform(x0, x_end, h)
+if x_end < 1.0 - 1e-12:
+    xs += graded(x_end, 1.0, h, True)[1:]
 # y: uniform in the band around 0.5 (which is a grid line), graded outside
 ylo = graded(0.0, 0.5 - band, h, False)[:-1] + uniform(0.5 - band, 0.5, h)
 yhi = uniform(0.5, 0.5 + band, h)[1:] + graded(0.5 + band, 1.0, h, True)[1:]
@@ -117,4 +125,5 @@ with open(out, "w") as f:
         f.write(f"{e} {etype} 2 {tag} {tag} " + " ".join(map(str, v)) + "\n")
     f.write("$EndElements\n")
 print(f"{out}: {len([e for e in elements if e[0] == 5])} hexahedra, "
-      f"{len(nodes)} nodes, h = {h} mm along the crack path")
+      f"{len(nodes)} nodes, h = {h} mm for {0.5 - band} <= x <= {x_end}, "
+      f"|y - 0.5| <= {band}")

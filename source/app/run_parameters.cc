@@ -17,7 +17,8 @@ namespace DuctileContact
     void
     declare_lists(ParameterHandler          &prm,
                   std::vector<unsigned int> &material_ids,
-                  std::vector<unsigned int> &boundary_ids)
+                  std::vector<unsigned int> &boundary_ids,
+                  std::vector<unsigned int> &contact_pairs)
     {
       prm.enter_subsection("Bodies");
       prm.add_parameter(
@@ -35,6 +36,14 @@ namespace DuctileContact
         "Boundary ids that carry conditions; each needs a subsection "
         "'Boundary <id>'. Boundaries not listed are traction free.",
         Patterns::List(Patterns::Integer(0, 254), 0, 255, ","));
+      prm.leave_subsection();
+      prm.enter_subsection("Contact");
+      prm.add_parameter(
+        "Pairs",
+        contact_pairs,
+        "Numbers n of the contact pairs; each needs a subsection 'Contact "
+        "pair <n>'. Empty: no contact.",
+        Patterns::List(Patterns::Integer(1, 1000), 0, 1000, ","));
       prm.leave_subsection();
     }
 
@@ -58,10 +67,12 @@ namespace DuctileContact
 
   void
   RunParameters::declare(const std::vector<unsigned int> &material_id_list,
-                         const std::vector<unsigned int> &boundary_id_list)
+                         const std::vector<unsigned int> &boundary_id_list,
+                         const std::vector<unsigned int> &pair_list)
   {
-    material_ids = material_id_list;
-    boundary_ids = boundary_id_list;
+    material_ids         = material_id_list;
+    boundary_ids         = boundary_id_list;
+    contact_pair_numbers = pair_list;
 
     mesh.declare(prm);
 
@@ -73,7 +84,7 @@ namespace DuctileContact
                       Patterns::Integer(1, 4));
     prm.leave_subsection();
 
-    declare_lists(prm, material_ids, boundary_ids);
+    declare_lists(prm, material_ids, boundary_ids, contact_pair_numbers);
 
     bodies.clear();
     for (const unsigned int id : material_ids)
@@ -89,6 +100,13 @@ namespace DuctileContact
         boundary_conditions.back().boundary_id = id;
         boundary_conditions.back().declare(prm);
       }
+    contact_pairs.clear();
+    for (const unsigned int n : contact_pair_numbers)
+      {
+        contact_pairs.emplace_back();
+        contact_pairs.back().number = n;
+        contact_pairs.back().declare(prm);
+      }
 
     load_stepping.declare(prm);
     newton.declare(prm);
@@ -103,18 +121,19 @@ namespace DuctileContact
   RunParameters::parse_string(const std::string &text)
   {
     // Pass 1: find out which Body / Boundary subsections exist.
-    std::vector<unsigned int> mids{0}, bids;
+    std::vector<unsigned int> mids{0}, bids, pairs;
     {
       ParameterHandler first_pass;
-      declare_lists(first_pass, mids, bids);
+      declare_lists(first_pass, mids, bids, pairs);
       first_pass.parse_input_from_string(text, "", true);
     }
     check_unique(mids, "Bodies/Material ids");
     check_unique(bids, "Boundary conditions/Boundary ids");
+    check_unique(pairs, "Contact/Pairs");
 
     // Pass 2: the full, strict parse.
     prm.clear();
-    declare(mids, bids);
+    declare(mids, bids, pairs);
     prm.parse_input_from_string(text, "", false);
     check();
   }
@@ -126,9 +145,9 @@ namespace DuctileContact
   {
     if (file_name.empty())
       {
-        // Defaults only, with one example Body and Boundary subsection so
-        // that --print-parameters documents their entries.
-        declare({0}, {0});
+        // Defaults only, with one example Body, Boundary and Contact pair
+        // subsection so that --print-parameters documents their entries.
+        declare({0}, {0}, {1});
         return;
       }
     std::ifstream in(file_name);
@@ -149,6 +168,8 @@ namespace DuctileContact
       b.check();
     for (BoundaryCondition &bc : boundary_conditions)
       bc.check();
+    for (const ContactPairParameters &c : contact_pairs)
+      c.check();
     load_stepping.check();
     newton.check();
     coupling.check();

@@ -5,6 +5,7 @@
 
 #include <ductile_contact/app/application.h>
 #include <ductile_contact/app/simulation.h>
+#include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/output/solution_writer.h>
 #include <ductile_contact/solver/linear_solver.h>
 #include <ductile_contact/solver/newton_solver.h>
@@ -90,6 +91,14 @@ namespace DuctileContact
       TimerOutput::Scope scope(timer, "setup: rigid-body modes");
       linear_solver->setup();
     }
+    if (!parameters.contact_pairs.empty())
+      {
+        TimerOutput::Scope scope(timer, "setup: contact surfaces");
+        contact = std::make_unique<ContactProblem>(parameters.contact_pairs,
+                                                   *discretisation,
+                                                   bodies);
+        contact->setup();
+      }
     newton = std::make_unique<NewtonSolver>(parameters.newton,
                                             parameters.coupling,
                                             *discretisation,
@@ -98,7 +107,8 @@ namespace DuctileContact
                                             parameters.boundary_conditions,
                                             force_scale,
                                             verbose_out,
-                                            timer);
+                                            timer,
+                                            contact.get());
     newton->setup();
     writer = std::make_unique<SolutionWriter>(parameters.output.directory,
                                               *discretisation,
@@ -275,6 +285,24 @@ namespace DuctileContact
     statistics.add("energy_residual",
                    external_work - stored_energy - plastic_work -
                      committed.fracture_energy - fracture_viscous_work);
+    if (contact)
+      {
+        const auto &pairs = parameters.contact_pairs;
+        for (unsigned int p = 0; p < pairs.size(); ++p)
+          {
+            const ContactPairSummary &c = contact->summary()[p];
+            const std::string         name =
+              "contact" + std::to_string(pairs[p].number);
+            for (unsigned int d = 0; d < dim; ++d)
+              statistics.add(name + "_force_" + xyz[d], c.force[d]);
+            statistics.add(name + "_area", c.area);
+            statistics.add(name + "_active_nodes", c.active_nodes);
+            statistics.add(name + "_max_penetration", c.max_penetration);
+            statistics.add(name + "_max_pressure", c.max_pressure);
+            statistics.add(name + "_min_pressure", c.min_pressure);
+          }
+        statistics.add("contact_augmentations", report.augmentations);
+      }
     statistics.add("newton_iterations", report.iterations);
     if (cracking)
       statistics.add("staggered_iterations", report.staggered_iterations);
@@ -377,6 +405,8 @@ namespace DuctileContact
         }
         previous_internal_force = internal_force;
         committed               = commit(step_data);
+        if (contact)
+          contact->commit();
         plastic_work += committed.plastic_work_increment;
         fracture_viscous_work += committed.fracture_viscous_work_increment;
         if (discretisation->dofs_per_block[Block::phase_field] > 0)

@@ -3,9 +3,11 @@
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/discretisation/constraints.h>
 #include <ductile_contact/solver/newton_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -23,7 +25,8 @@ namespace DuctileContact
     const std::deque<BoundaryCondition> &boundary_conditions,
     const double                         force_scale,
     ConditionalOStream                  &verbose_out,
-    TimerOutput                         &timer)
+    TimerOutput                         &timer,
+    ContactProblem                      *contact)
       : parameters(parameters)
       , coupling(coupling)
       , discretisation(discretisation)
@@ -33,6 +36,7 @@ namespace DuctileContact
       , force_scale(force_scale)
       , verbose_out(verbose_out)
       , timer(timer)
+      , contact(contact)
   {
   }
 
@@ -50,12 +54,19 @@ namespace DuctileContact
       discretisation, boundary_conditions, 0., nullptr, constraints);
 
     // Every field couples with every other within a cell (the coupled
-    // [u | alpha | s] tangent); empty blocks cost nothing.
-    TrilinosWrappers::BlockSparsityPattern sp(
-      discretisation.owned_partitioning,
-      discretisation.owned_partitioning,
-      discretisation.relevant_partitioning,
-      comm);
+    // [u | alpha | s] tangent); empty blocks cost nothing. Contact writes
+    // rows of every surface DoF (master rows of other ranks).
+    std::vector<IndexSet> writable_rows = discretisation.relevant_partitioning;
+    if (contact)
+      {
+        const IndexSet surface = contact->surface_dofs();
+        writable_rows[Block::displacement].add_indices(
+          surface.get_view(0, discretisation.dofs_per_block[0]));
+      }
+    TrilinosWrappers::BlockSparsityPattern sp(discretisation.owned_partitioning,
+                                              discretisation.owned_partitioning,
+                                              writable_rows,
+                                              comm);
     if (discretisation.dofs_per_block[Block::phase_field] == 0)
       DoFTools::make_sparsity_pattern(discretisation.dof_handler,
                                       sp,
@@ -87,6 +98,8 @@ namespace DuctileContact
     // diagonal the flux pattern of this rank does not hold.
     for (const auto i : discretisation.locally_relevant_dofs)
       sp.add(i, i);
+    if (contact)
+      contact->add_couplings(sp, constraints);
     sp.compress();
     tangent.reinit(sp);
 
@@ -103,6 +116,59 @@ namespace DuctileContact
   NewtonSolver::solve_step(const StepData                     &step,
                            TrilinosWrappers::MPI::BlockVector &u,
                            TrilinosWrappers::MPI::BlockVector &internal_force)
+  {
+    if (!contact)
+      return solve_coupled(step, u, internal_force);
+
+    u_ghosted = u;
+    if (contact->begin_step(u_ghosted))
+      setup(); // the candidate pairs changed: new couplings
+    NewtonReport       total;
+    const unsigned int max_augmentations =
+      std::max_element(contact->pairs.begin(),
+                       contact->pairs.end(),
+                       [](const auto &a, const auto &b) {
+                         return a.max_augmentations < b.max_augmentations;
+                       })
+        ->max_augmentations;
+    for (unsigned int k = 0;; ++k)
+      {
+        const NewtonReport r = solve_coupled(step, u, internal_force);
+        total.iterations += r.iterations;
+        total.linear_iterations += r.linear_iterations;
+        total.staggered_iterations = r.staggered_iterations;
+        total.residual_norms       = r.residual_norms;
+        total.convergence_rate     = r.convergence_rate;
+        total.info                 = r.info;
+        total.augmentations        = k;
+        if (!r.converged)
+          {
+            total.failure = r.failure;
+            return total;
+          }
+        if (contact->augment())
+          {
+            total.converged = true;
+            return total;
+          }
+        if (k + 1 == max_augmentations)
+          {
+            total.failure = "contact penetration above the tolerance after " +
+                            std::to_string(k + 1) + " multiplier updates";
+            return total;
+          }
+        verbose_out << "      contact multipliers updated (" << k + 1 << ")"
+                    << std::endl;
+      }
+  }
+
+
+
+  NewtonReport
+  NewtonSolver::solve_coupled(
+    const StepData                     &step,
+    TrilinosWrappers::MPI::BlockVector &u,
+    TrilinosWrappers::MPI::BlockVector &internal_force)
   {
     const bool has_s = discretisation.dofs_per_block[Block::phase_field] > 0;
     if (coupling.strategy == "monolithic" || !has_s)
@@ -285,12 +351,15 @@ namespace DuctileContact
         const bool pending = dirichlet_pending();
 
         {
-          TimerOutput::Scope scope(timer, "assembly");
-          report.info = assembler.assemble(
-            u_ghosted,
-            step,
-            constraints,
-            {&tangent, &newton_rhs, &residual, &internal_force});
+          TimerOutput::Scope    scope(timer, "assembly");
+          const AssemblyTargets targets{&tangent,
+                                        &newton_rhs,
+                                        &residual,
+                                        &internal_force};
+          report.info =
+            assembler.assemble(u_ghosted, step, constraints, targets);
+          if (contact)
+            contact->assemble(u_ghosted, constraints, targets);
         }
         const Norms  n     = block_norms();
         const double scale = internal_force.block(0).l2_norm();
@@ -342,12 +411,15 @@ namespace DuctileContact
             trial.add(step_length, delta);
             u_ghosted = trial;
             {
-              TimerOutput::Scope scope(timer, "assembly (line search)");
-              trial_info = assembler.assemble(
-                u_ghosted,
-                step,
-                constraints,
-                {nullptr, nullptr, &residual, &internal_force});
+              TimerOutput::Scope    scope(timer, "assembly (line search)");
+              const AssemblyTargets targets{nullptr,
+                                            nullptr,
+                                            &residual,
+                                            &internal_force};
+              trial_info =
+                assembler.assemble(u_ghosted, step, constraints, targets);
+              if (contact)
+                contact->assemble(u_ghosted, constraints, targets);
               trial_n     = block_norms();
               trial_r     = merit(trial_n, tol);
               trial_scale = internal_force.block(0).l2_norm();

@@ -10,6 +10,7 @@
 #include <ductile_contact/materials/degradation.h>
 #include <ductile_contact/materials/neo_hooke.h>
 #include <ductile_contact/phase_field/c0ip.h>
+#include <ductile_contact/solver/scatter.h>
 #include <ductile_contact/solver/system_assembler.h>
 
 #include <cmath>
@@ -45,43 +46,6 @@ namespace DuctileContact
       return c;
     }
 
-    /**
-     * Adds one local contribution to every requested target: tangent and
-     * Newton right-hand side -R (condensed with the Newton @p constraints),
-     * the residual R = -@p rhs, and @p f_int condensed with the
-     * @p hanging_nodes constraints only. @p rhs is overwritten.
-     */
-    void
-    scatter(const FullMatrix<double>                   &matrix,
-            Vector<double>                             &rhs,
-            const Vector<double>                       &f_int,
-            const std::vector<types::global_dof_index> &indices,
-            const AffineConstraints<double>            &constraints,
-            const AffineConstraints<double>            &hanging_nodes,
-            const AssemblyTargets                      &targets)
-    {
-      if (targets.tangent)
-        constraints.distribute_local_to_global(
-          matrix, rhs, indices, *targets.tangent, *targets.newton_rhs);
-      else if (targets.newton_rhs)
-        constraints.distribute_local_to_global(rhs,
-                                               indices,
-                                               *targets.newton_rhs);
-      if (targets.residual)
-        {
-          rhs *= -1.;
-          constraints.distribute_local_to_global(rhs,
-                                                 indices,
-                                                 *targets.residual);
-        }
-      // Condensed with the hanging-node constraints only: then the sum of
-      // f_int over the DoFs of a boundary is the force through it even
-      // where the boundary carries hanging nodes.
-      if (targets.internal_force)
-        hanging_nodes.distribute_local_to_global(f_int,
-                                                 indices,
-                                                 *targets.internal_force);
-    }
   } // namespace
 
 

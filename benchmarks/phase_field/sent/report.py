@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Builds results.md (table) and sent.png (peak-force error against wall time)
-from runs/lf<L>/*/statistics of benchmarks/phase_field/sent/run.sh.
+"""Builds results.md and sent.png (l_f = 0.05 mm), or results_lf<L>.md and
+sent_lf<L>.png (other l_f): the table and the peak-force error against wall
+time, from runs/lf<L>/*/statistics of benchmarks/phase_field/sent/run.sh.
 Usage: report.py DIR LF_MM"""
 import glob
 import os
@@ -10,6 +11,9 @@ import sys
 here = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
 lf_mm = sys.argv[2] if len(sys.argv) > 2 else "0.05"
 root = os.path.join(here, "runs", "lf" + lf_mm)
+suffix = "" if lf_mm == "0.05" else "_lf" + lf_mm
+results_md = os.path.join(here, f"results{suffix}.md")
+plot_png = os.path.join(here, f"sent{suffix}.png")
 
 
 def load(run):
@@ -17,7 +21,7 @@ def load(run):
     names = lines[0].split()
     rows = [dict(zip(names, map(float, l.split()))) for l in lines[1:]]
     screen = open(os.path.join(run, "screen.txt")).read()
-    m = re.match(r"q(\d)-h(\d+)-(\w+)-([\w-]+)-dt([\d.]+)$", os.path.basename(run))
+    m = re.match(r"q(\d)-h(\d+)-(\w+)-([\w-]+?)-dt([\d.]+)(?:-box(\d+))?$", os.path.basename(run))
     mesh = re.search(r"File name = .*_h([\d.e-]+)_b", open(os.path.join(run, "scene.prm")).read())
     thickness_mm = float(mesh.group(1))  # the slab is one element (h) thick
     # force per unit thickness [kN/mm] = F [N] / (t [mm]) / 1000
@@ -32,6 +36,7 @@ def load(run):
     last = rows[min(k + 1, len(rows) - 1)] if rows else {}
     return dict(name=os.path.basename(run), degree=int(m.group(1)), ratio=int(m.group(2)),
                 strategy=m.group(3), solver=m.group(4), dt=float(m.group(5)),
+                box=int(m.group(6)) if m.group(6) else None,
                 dofs=int(re.search(r"DoFs: (\d+)", screen).group(1)),
                 peak=force[k] if force else float("nan"), u_peak=disp[k] if disp else float("nan"),
                 newton=int(sum(r["newton_iterations"] for r in rows[:k + 2])),
@@ -45,12 +50,12 @@ def load(run):
 
 runs = [load(r) for r in sorted(glob.glob(os.path.join(root, "q*")))
         if os.path.exists(os.path.join(r, "statistics"))]
-ref_candidates = [r for r in runs if r["complete"] and r["dt"] == 0.02]
-ref = max(ref_candidates, key=lambda r: (r["degree"] * r["ratio"], r["degree"]))
+ref_candidates = [r for r in runs if r["complete"]]
+ref = max(ref_candidates, key=lambda r: (r["degree"] * r["ratio"], r["degree"], -r["dt"]))
 for r in runs:
     r["error"] = abs(r["peak"] - ref["peak"]) / ref["peak"]
 
-out = open(os.path.join(here, "results.md"), "w")
+out = open(results_md, "w")
 out.write(f"SENT slab, l_f = {lf_mm} mm; reference: {ref['name']} "
           f"(F_max = {ref['peak']:.5f} kN/mm at u = {ref['u_peak']:.4g} mm, {ref['dofs']} DoFs)\n\n")
 out.write("Counts and times up to the step after the peak.\n\n")
@@ -65,7 +70,7 @@ for r in sorted(runs, key=lambda r: (r["dt"], r["degree"], r["ratio"], r["strate
               f"{r['linear'] / max(r['newton'], 1):.1f} | "
               f"{r['cutbacks']} | {r['assembly']:.1f} | {r['solve']:.1f} | {r['wall']:.1f} |\n")
 out.close()
-print(open(os.path.join(here, "results.md")).read())
+print(open(results_md).read())
 
 try:
     import matplotlib
@@ -100,5 +105,5 @@ b.set_title("force-displacement (monolithic, GMRES)")
 b.legend(fontsize=7)
 b.grid(True, alpha=0.3)
 fig.tight_layout()
-fig.savefig(os.path.join(here, "sent.png"), dpi=120)
-print("wrote sent.png")
+fig.savefig(plot_png, dpi=120)
+print("wrote", plot_png)

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <ductile_contact/contact/contact_parameters.h>
 #include <ductile_contact/discretisation/boundary_condition.h>
 #include <ductile_contact/materials/body_parameters.h>
 #include <ductile_contact/mesh/mesh_parameters.h>
@@ -18,9 +19,10 @@ namespace DuctileContact
    * Every input of a run. The in-class defaults of the structs are the only
    * defaults (entries are bound with ParameterHandler::add_parameter).
    *
-   * The numbers of `Body <id>` and `Boundary <id>` subsections depend on the
-   * file: a first, tolerant pass reads `Bodies/Material ids` and
-   * `Boundary conditions/Boundary ids`, then every subsection is declared
+   * The numbers of `Body <id>`, `Boundary <id>` and `Contact pair <n>`
+   * subsections depend on the file: a first, tolerant pass reads
+   * `Bodies/Material ids`, `Boundary conditions/Boundary ids` and
+   * `Contact/Pairs`, then every subsection is declared
    * and the file is parsed strictly (unknown entries are errors).
    */
   struct RunParameters
@@ -30,11 +32,13 @@ namespace DuctileContact
     // deques: entries are bound by address, so elements must not move.
     std::deque<BodyParameters>    bodies;
     std::deque<BoundaryCondition> boundary_conditions;
-    LoadSteppingParameters        load_stepping;
-    NewtonParameters              newton;
-    CouplingParameters            coupling;
-    LinearSolverParameters        linear_solver;
-    OutputParameters              output;
+    /// Empty: the scene runs no contact code.
+    std::deque<ContactPairParameters> contact_pairs;
+    LoadSteppingParameters            load_stepping;
+    NewtonParameters                  newton;
+    CouplingParameters                coupling;
+    LinearSolverParameters            linear_solver;
+    OutputParameters                  output;
 
     dealii::ParameterHandler prm;
 
@@ -54,12 +58,14 @@ namespace DuctileContact
   private:
     void
     declare(const std::vector<unsigned int> &material_ids,
-            const std::vector<unsigned int> &boundary_ids);
+            const std::vector<unsigned int> &boundary_ids,
+            const std::vector<unsigned int> &contact_pair_numbers);
 
     void
     check();
 
     std::vector<unsigned int> material_ids{0};
     std::vector<unsigned int> boundary_ids;
+    std::vector<unsigned int> contact_pair_numbers;
   };
 } // namespace DuctileContact

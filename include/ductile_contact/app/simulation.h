@@ -18,6 +18,7 @@
 
 namespace DuctileContact
 {
+  class ContactProblem;
   class LinearSolver;
   class NewtonSolver;
   struct NewtonReport;
@@ -84,6 +85,7 @@ namespace DuctileContact
     std::unique_ptr<Discretisation>                              discretisation;
     std::unique_ptr<SystemAssembler>                             assembler;
     std::unique_ptr<LinearSolver>                                linear_solver;
+    std::unique_ptr<ContactProblem>                              contact;
     std::unique_ptr<NewtonSolver>                                newton;
     std::unique_ptr<SolutionWriter>                              writer;
     Statistics                                                   statistics;

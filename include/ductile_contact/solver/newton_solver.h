@@ -17,6 +17,8 @@
 
 namespace DuctileContact
 {
+  class ContactProblem;
+
   /// Outcome of one Newton solve (one load step).
   struct NewtonReport
   {
@@ -26,6 +28,8 @@ namespace DuctileContact
     /// Alternations of the staggered scheme (1 for monolithic; 0 for a
     /// monolithic-staggered step that Newton solved without alternating).
     unsigned int staggered_iterations = 1;
+    /// Contact multiplier updates (Newton solves - 1) of the step.
+    unsigned int augmentations = 0;
     /// ||R|| of the iterations whose Dirichlet data were reached.
     std::vector<double> residual_norms;
     /// Observed order log(r_k+1/r_k)/log(r_k/r_k-1) of the last three
@@ -52,6 +56,10 @@ namespace DuctileContact
    *
    * solve_step() applies the coupling strategy: monolithic, staggered, or
    * monolithic with a staggered retry of a failed step (CouplingParameters).
+   * With contact it first searches for candidate pairs (rebuilding the
+   * sparsity pattern when they change), and repeats the solve with updated
+   * contact multipliers until the penetration tolerance is met
+   * (ContactProblem::augment()).
    */
   class NewtonSolver
   {
@@ -64,7 +72,8 @@ namespace DuctileContact
                  const std::deque<BoundaryCondition> &boundary_conditions,
                  const double                         force_scale,
                  dealii::ConditionalOStream          &verbose_out,
-                 dealii::TimerOutput                 &timer);
+                 dealii::TimerOutput                 &timer,
+                 ContactProblem                      *contact = nullptr);
 
     /// Sparsity pattern and vectors; call after every DoF distribution.
     void
@@ -89,6 +98,12 @@ namespace DuctileContact
           const std::array<bool, Block::n_blocks>    &frozen);
 
   private:
+    /// solve_step() without the contact augmentation loop.
+    NewtonReport
+    solve_coupled(const StepData                             &step,
+                  dealii::TrilinosWrappers::MPI::BlockVector &u,
+                  dealii::TrilinosWrappers::MPI::BlockVector &internal_force);
+
     const NewtonParameters              &parameters;
     const CouplingParameters            &coupling;
     const Discretisation                &discretisation;
@@ -98,6 +113,7 @@ namespace DuctileContact
     const double                         force_scale;
     dealii::ConditionalOStream          &verbose_out;
     dealii::TimerOutput                 &timer;
+    ContactProblem                      *contact;
 
     dealii::TrilinosWrappers::BlockSparseMatrix tangent;
     dealii::TrilinosWrappers::MPI::BlockVector  newton_rhs, residual, delta,

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+
+#include <string>
+
+namespace DuctileContact
+{
+  /**
+   * One contact pair, subsection `Contact pair <n>` (model.md section 5,
+   * contact.md). The slave side carries the nodal contact pressures and the
+   * integration; make it the finer of the two meshes. Both surfaces must be
+   * boundaries of FE_Q(2) bodies (quad9 faces).
+   *
+   * Normal contact is enforced by the augmented Lagrangian method on the
+   * nodal weighted gaps: lambda_j = max(0, lambdahat_j - eps_N g_j / A_j),
+   * Newton for fixed multipliers lambdahat, then lambdahat <- lambda (Uzawa)
+   * until the largest penetration is below the tolerance.
+   */
+  struct ContactPairParameters
+  {
+    unsigned int               number            = 1;
+    dealii::types::boundary_id slave_boundary_id  = 0;
+    dealii::types::boundary_id master_boundary_id = 1;
+    /// Coulomb coefficient mu_c (only 0 is implemented so far).
+    double friction_coefficient = 0.;
+    /// eps_N = penalty_factor * E_slave / h_slave [Pa/m].
+    double penalty_factor = 10.;
+    /// Broad-phase enlargement of the face boxes [m]; 0: the largest face
+    /// diameter of the two surfaces.
+    double search_radius = 0.;
+    /// Largest allowed penetration, relative to the smallest slave face
+    /// size.
+    double penetration_tolerance = 1e-6;
+    /// Uzawa updates per load step before the step counts as failed.
+    unsigned int max_augmentations = 30;
+
+    void
+    declare(dealii::ParameterHandler &prm);
+
+    /// Throws InputError for inconsistent entries.
+    void
+    check() const;
+
+    std::string
+    subsection() const;
+  };
+} // namespace DuctileContact

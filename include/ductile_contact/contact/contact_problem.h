@@ -1,0 +1,160 @@
+#pragma once
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/block_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include <ductile_contact/contact/contact_parameters.h>
+#include <ductile_contact/contact/contact_surface.h>
+#include <ductile_contact/materials/body_parameters.h>
+#include <ductile_contact/solver/system_assembler.h>
+
+#include <deque>
+#include <map>
+#include <vector>
+
+namespace DuctileContact
+{
+  /// State of one contact pair after an assembly (same on every rank).
+  struct ContactPairSummary
+  {
+    /// Sum of the nodal contact forces on the slave side, lambda_j A_j n_j
+    /// [N] (its negative acts on the master).
+    dealii::Tensor<1, dim> force;
+    /// Sum of A_j over the active slave nodes [m^2].
+    double area = 0.;
+    unsigned int active_nodes = 0;
+    /// Largest nodal penetration max(0, -g_j / A_j) over the slave nodes
+    /// [m].
+    double max_penetration = 0.;
+    /// Largest and smallest nodal pressure lambda_j over the active nodes
+    /// [Pa].
+    double max_pressure = 0., min_pressure = 0.;
+  };
+
+  /**
+   * Frictionless mortar contact between deformable bodies (model.md section
+   * 5, contact.md), one or more pairs of boundary surfaces.
+   *
+   * Discretisation: standard (not dual) multiplier basis Phi_j = N_j on the
+   * slave quad9 faces, segment-based integration (mortar_points()) on the
+   * current geometry of
+   *
+   *   D_jk = int Phi_j N_k dA,  M_jl = int Phi_j (N_l o chi) dA,
+   *   A_j = sum_k D_jk,  g_j = n_j . (sum_l M_jl x_l - sum_k D_jk x_k),
+   *
+   * over the overlap of each slave face with its candidate master faces,
+   * n_j the averaged nodal normal (g_j >= 0 open).
+   *
+   * Enforcement (KKT (44)): augmented Lagrangian, lambda_j = max(0,
+   * lambdahat_j - eps_N g_j / A_j), contact force f = sum_j lambda_j
+   * [D_jk n_j on slave node k | -M_jl n_j on master node l]; Newton
+   * iterates with lambdahat fixed, augment() then sets lambdahat <- lambda
+   * until max_j (-g_j / A_j) is below the tolerance. The tangent is
+   * eps_N / A_j a_j a_j^T with a_j = dg_j/dx for D, M and n_j held fixed
+   * (their change with the geometry is not linearised yet: Newton then
+   * converges linearly when the contact zone moves or rotates; in
+   * small-sliding, small-rotation contact the neglected terms are of the
+   * order of the contact strain).
+   *
+   * Search: a bounding-box broad phase (boxes enlarged by the search
+   * radius) once per load step in begin_step(); the candidates fix the
+   * sparsity couplings of the step. The exact pair checks and the
+   * integration run at every assembly on the current geometry.
+   *
+   * Parallel layout: the surfaces are replicated (ContactSurface); every
+   * rank integrates all pairs (work O(contact faces) per rank) and
+   * assembles the rows of the slave nodes whose DoFs it owns, which touch
+   * master rows owned by other ranks: those are added through the
+   * distributed matrix and vectors (compress(add)). Results are the same on
+   * any number of ranks up to round-off.
+   */
+  class ContactProblem
+  {
+  public:
+    ContactProblem(const std::deque<ContactPairParameters> &pairs,
+                   const Discretisation                    &discretisation,
+                   const std::map<dealii::types::material_id,
+                                  const BodyParameters *>  &bodies);
+
+    /// Gathers the surfaces; call after every DoF distribution.
+    void
+    setup();
+
+    /// Candidate search on the geometry of @p u (ghosted) and reset of the
+    /// multipliers to their committed values; returns true when the
+    /// candidate couplings changed (the sparsity pattern must be rebuilt).
+    bool
+    begin_step(const dealii::TrilinosWrappers::MPI::BlockVector &u);
+
+    /// All DoFs of the contact surfaces (rows the assembly may write).
+    dealii::IndexSet
+    surface_dofs() const;
+
+    /// Adds the couplings of the current candidates.
+    void
+    add_couplings(dealii::TrilinosWrappers::BlockSparsityPattern &sp,
+                  const dealii::AffineConstraints<double> &constraints) const;
+
+    /// Adds the contact contributions at @p u (ghosted) to @p targets (which
+    /// hold the bulk terms) and compresses them.
+    void
+    assemble(const dealii::TrilinosWrappers::MPI::BlockVector &u,
+             const dealii::AffineConstraints<double>          &constraints,
+             const AssemblyTargets                            &targets);
+
+    /// Uzawa update after a converged Newton solve; returns true when every
+    /// pair meets its penetration tolerance (then nothing changed).
+    bool
+    augment();
+
+    /// The multipliers of the accepted step become the committed ones.
+    void
+    commit();
+
+    const std::vector<ContactPairSummary> &
+    summary() const
+    {
+      return summaries;
+    }
+
+    const std::deque<ContactPairParameters> &pairs;
+
+  private:
+    struct Pair
+    {
+      ContactSurface slave, master;
+      double         penalty = 0.; ///< eps_N [Pa/m]
+      double         search_radius = 0., tolerance = 0.; ///< [m]
+      double         face_size = 0.; ///< smallest slave face size [m]
+      /// Candidate master faces of each slave face.
+      std::vector<std::vector<unsigned int>> candidates;
+      /// Multipliers per slave node: iterate and committed [Pa].
+      std::vector<double> multiplier, committed_multiplier;
+      // Of the last assembly, per slave node:
+      std::vector<std::map<unsigned int, double>> D, M;
+      std::vector<dealii::Tensor<1, dim>>         normal;
+      std::vector<double>                         area, gap, pressure;
+      std::vector<bool>                           active;
+    };
+
+    /// D, M, normals, A_j, g_j and lambda_j of @p pair on its current
+    /// geometry.
+    void
+    integrate(Pair &pair);
+
+    /// The slave and master nodes that node @p j couples to.
+    void
+    coupled_nodes(const Pair               &pair,
+                  const unsigned int        j,
+                  std::vector<unsigned int> &slave_nodes,
+                  std::vector<unsigned int> &master_nodes) const;
+
+    const Discretisation &discretisation;
+    const std::map<dealii::types::material_id, const BodyParameters *> bodies;
+    std::vector<Pair>               data;
+    std::vector<ContactPairSummary> summaries;
+  };
+} // namespace DuctileContact

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <ductile_contact/contact/quad9.h>
+#include <ductile_contact/discretisation/discretisation.h>
+
+#include <array>
+#include <vector>
+
+namespace DuctileContact
+{
+  /**
+   * The faces of one boundary id, replicated on every MPI rank: quad9 faces
+   * (FE_Q(2) displacement) with their nodes' global DoF indices, reference
+   * and current positions.
+   *
+   * How the data moves: gather() all-gathers the faces of the locally owned
+   * cells once per DoF distribution (connectivity, DoF indices, reference
+   * positions); update() then sums the current positions of the nodes each
+   * rank owns into one array of 3 x (number of surface nodes) doubles with
+   * an all-reduce, once per Newton iteration. Memory and traffic per rank
+   * grow with the size of the contact surface, not with the mesh, which is
+   * fine while surfaces have up to some 10^5 faces; beyond that the
+   * replicated surface should be replaced by a some-to-some exchange of
+   * the faces near each rank's slave faces.
+   */
+  struct ContactSurface
+  {
+    struct Node
+    {
+      std::array<dealii::types::global_dof_index, dim> dofs;
+      dealii::Point<dim>                               reference;
+      dealii::Point<dim>                               current;
+    };
+    struct Face
+    {
+      std::array<unsigned int, 9> nodes; ///< Quad9 order, outward normal
+      dealii::types::material_id  material_id;
+    };
+
+    dealii::types::boundary_id boundary_id = 0;
+    std::vector<Node>          nodes;
+    std::vector<Face>          faces;
+    /// Faces that contain each node.
+    std::vector<std::vector<unsigned int>> node_faces;
+
+    /// Collects the boundary faces with @p id from every rank. Requires
+    /// FE_Q(2) for the displacement (throws InputError otherwise).
+    void
+    gather(const Discretisation &discretisation, dealii::types::boundary_id id);
+
+    /// Current positions x = X + u from @p u (ghosted).
+    void
+    update(const dealii::TrilinosWrappers::MPI::BlockVector &u,
+           const Discretisation                             &discretisation);
+
+    Quad9
+    current_face(const unsigned int f) const;
+
+    /// Smallest distance between two nodes of a face (reference) [m].
+    double
+    smallest_face_size() const;
+    /// Largest face diameter (reference) [m].
+    double
+    largest_face_size() const;
+  };
+} // namespace DuctileContact

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <ductile_contact/core/types.h>
+
+#include <array>
+
+namespace DuctileContact
+{
+  /**
+   * A 9-node (biquadratic) surface patch x(xi, eta), (xi, eta) in [0, 1]^2:
+   * the face of an FE_Q(2) hexahedron in the current configuration. Node
+   * (a, b), a, b in {0, 1, 2}, sits at (xi, eta) = (a/2, b/2) and has index
+   * a + 3 b. The nodes are ordered so that x_xi x x_eta points out of the
+   * body.
+   */
+  struct Quad9
+  {
+    std::array<dealii::Point<dim>, 9> x;
+
+    /// Lagrange shape functions N_i(xi, eta) and their derivatives.
+    static void
+    shape(const dealii::Point<2>  &xi,
+          std::array<double, 9>   &values,
+          std::array<double, 9>   *d_xi  = nullptr,
+          std::array<double, 9>   *d_eta = nullptr);
+
+    dealii::Point<dim>
+    position(const dealii::Point<2> &xi) const;
+
+    /// Tangents x_xi, x_eta at @p xi.
+    std::array<dealii::Tensor<1, dim>, 2>
+    tangents(const dealii::Point<2> &xi) const;
+
+    /// Outward unit normal at @p xi.
+    dealii::Tensor<1, dim>
+    normal(const dealii::Point<2> &xi) const;
+
+    /// The parameter point where the line p + t d meets the patch (Newton on
+    /// (xi, eta, t) from @p start); returns false if Newton does not
+    /// converge or the line is parallel to the patch.
+    bool
+    project_along(const dealii::Point<dim>     &p,
+                  const dealii::Tensor<1, dim> &d,
+                  const dealii::Point<2>       &start,
+                  dealii::Point<2>             &xi) const;
+
+    /// Parameter point of node @p i.
+    static dealii::Point<2>
+    node_parameter(const unsigned int i)
+    {
+      return {0.5 * (i % 3), 0.5 * (i / 3)};
+    }
+  };
+} // namespace DuctileContact

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <ductile_contact/solver/system_assembler.h>
+
+#include <vector>
+
+namespace DuctileContact
+{
+  /**
+   * Adds one local contribution to every requested target: tangent and
+   * Newton right-hand side -R (condensed with the Newton @p constraints),
+   * the residual R = -@p rhs, and @p f_int condensed with the
+   * @p hanging_nodes constraints only. @p rhs is overwritten. Used by the
+   * bulk assembly (cells and C0IP faces) and by contact.
+   */
+  void
+  scatter(const dealii::FullMatrix<double>                   &matrix,
+          dealii::Vector<double>                             &rhs,
+          const dealii::Vector<double>                       &f_int,
+          const std::vector<dealii::types::global_dof_index> &indices,
+          const dealii::AffineConstraints<double>            &constraints,
+          const dealii::AffineConstraints<double>            &hanging_nodes,
+          const AssemblyTargets                              &targets);
+} // namespace DuctileContact

@@ -1,0 +1,83 @@
+#include <ductile_contact/contact/contact_parameters.h>
+#include <ductile_contact/core/input_error.h>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  std::string
+  ContactPairParameters::subsection() const
+  {
+    return "Contact pair " + std::to_string(number);
+  }
+
+
+
+  void
+  ContactPairParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection(subsection());
+    prm.add_parameter("Slave boundary id",
+                      slave_boundary_id,
+                      "Boundary id of the slave surface (the finer mesh): "
+                      "its nodes carry the contact pressure.",
+                      Patterns::Integer(0, 254));
+    prm.add_parameter("Master boundary id",
+                      master_boundary_id,
+                      "Boundary id of the master surface.",
+                      Patterns::Integer(0, 254));
+    prm.add_parameter("Friction coefficient",
+                      friction_coefficient,
+                      "Coulomb coefficient mu_c [-]. Only frictionless "
+                      "contact (0) is implemented so far.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Penalty factor",
+                      penalty_factor,
+                      "Normal penalty of the augmented Lagrangian, eps_N = "
+                      "factor x E / h with E Young's modulus of the slave "
+                      "body and h its smallest contact-face size [-]. It "
+                      "sets how fast the multiplier updates converge, not "
+                      "the answer.",
+                      Patterns::Double(1e-6));
+    prm.add_parameter("Search radius",
+                      search_radius,
+                      "Enlargement of the face bounding boxes in the search "
+                      "for candidate master faces, done at the start of "
+                      "every load step [m]; must cover the relative motion "
+                      "within a step. 0: the largest face diameter of the "
+                      "two surfaces.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Penetration tolerance",
+                      penetration_tolerance,
+                      "Largest nodal penetration -g_j / A_j accepted at the "
+                      "end of a load step, relative to the smallest slave "
+                      "face size [-].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Maximum augmentations",
+                      max_augmentations,
+                      "Multiplier (Uzawa) updates per load step before the "
+                      "step counts as failed and is cut back.",
+                      Patterns::Integer(1, 1000));
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ContactPairParameters::check() const
+  {
+    const std::string s = subsection() + "/";
+    check_input(slave_boundary_id != master_boundary_id,
+                s + "Master boundary id",
+                std::to_string(master_boundary_id),
+                "a boundary id different from the slave boundary id");
+    check_input(friction_coefficient == 0.,
+                s + "Friction coefficient",
+                std::to_string(friction_coefficient),
+                "0 (Coulomb friction is not implemented yet, issue #5)");
+    check_input(penetration_tolerance > 0.,
+                s + "Penetration tolerance",
+                std::to_string(penetration_tolerance),
+                "a positive number");
+  }
+} // namespace DuctileContact

@@ -1,0 +1,199 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping.h>
+
+#include <ductile_contact/contact/contact_surface.h>
+#include <ductile_contact/core/input_error.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// Doubles per gathered face: material id, then per node 3 DoF
+    /// indices and 3 reference coordinates.
+    constexpr unsigned int face_record = 1 + 9 * 6;
+  } // namespace
+
+
+
+  void
+  ContactSurface::gather(const Discretisation      &discretisation,
+                         const types::boundary_id   id)
+  {
+    boundary_id = id;
+    const auto &dof_handler = discretisation.dof_handler;
+    const auto &mapping     = discretisation.mapping[0];
+
+    std::vector<double>                  local;
+    std::vector<types::global_dof_index> cell_dofs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned())
+          continue;
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (!cell->face(f)->at_boundary() ||
+                cell->face(f)->boundary_id() != id)
+              continue;
+            const FiniteElement<dim> &fe   = cell->get_fe();
+            const auto               &base = fe.base_element(0);
+            if (base.degree != 2 || base.dofs_per_cell != 27)
+              throw InputError(
+                "Finite elements/Polynomial degree",
+                std::to_string(base.degree),
+                "2 in a scene with contact (the mortar contact works on "
+                "quad9 faces)");
+            cell_dofs.resize(fe.n_dofs_per_cell());
+            cell->get_dof_indices(cell_dofs);
+
+            // Parameters of the face: the two free cell coordinates in
+            // cyclic order after the face's normal direction.
+            const unsigned int d = f / 2, c1 = (d + 1) % 3, c2 = (d + 2) % 3;
+            std::array<std::array<double, 6>, 9> node_data;
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const auto ci = fe.system_to_component_index(i);
+                if (ci.first != 0 || !fe.has_support_on_face(i, f))
+                  continue;
+                const Point<dim> p = base.unit_support_point(ci.second);
+                const unsigned int a = std::lround(2. * p[c1]);
+                const unsigned int b = std::lround(2. * p[c2]);
+                const Point<dim>   X =
+                  mapping.transform_unit_to_real_cell(cell, p);
+                auto &data = node_data[a + 3 * b];
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    data[c] = static_cast<double>(
+                      cell_dofs[fe.component_to_system_index(c, ci.second)]);
+                    data[3 + c] = X[c];
+                  }
+              }
+            // Orientation: x_xi x x_eta must point out of the cell.
+            Quad9 q;
+            for (unsigned int n = 0; n < 9; ++n)
+              q.x[n] = Point<dim>(node_data[n][3],
+                                  node_data[n][4],
+                                  node_data[n][5]);
+            const Tensor<1, dim> out = q.x[4] - cell->center();
+            if (q.normal(Point<2>(0.5, 0.5)) * out < 0.)
+              for (unsigned int a = 0; a < 3; ++a)
+                for (unsigned int b = a + 1; b < 3; ++b)
+                  std::swap(node_data[a + 3 * b], node_data[b + 3 * a]);
+            local.push_back(cell->material_id());
+            for (const auto &data : node_data)
+              local.insert(local.end(), data.begin(), data.end());
+          }
+      }
+
+    const std::vector<std::vector<double>> all =
+      Utilities::MPI::all_gather(dof_handler.get_communicator(), local);
+    nodes.clear();
+    faces.clear();
+    std::map<types::global_dof_index, unsigned int> node_index;
+    for (const auto &records : all)
+      for (std::size_t r = 0; r + face_record <= records.size();
+           r += face_record)
+        {
+          Face face;
+          face.material_id = static_cast<types::material_id>(records[r]);
+          for (unsigned int n = 0; n < 9; ++n)
+            {
+              const double *data = &records[r + 1 + 6 * n];
+              Node          node;
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  node.dofs[c] =
+                    static_cast<types::global_dof_index>(data[c]);
+                  node.reference[c] = data[3 + c];
+                }
+              node.current = node.reference;
+              const auto [it, inserted] =
+                node_index.emplace(node.dofs[0], nodes.size());
+              if (inserted)
+                nodes.push_back(node);
+              face.nodes[n] = it->second;
+            }
+          faces.push_back(face);
+        }
+    // A fixed face order (by reference centre) whatever the partition.
+    const auto centre = [&](const Face &f) {
+      return nodes[f.nodes[4]].reference;
+    };
+    std::sort(faces.begin(), faces.end(), [&](const Face &a, const Face &b) {
+      const Point<dim> pa = centre(a), pb = centre(b);
+      return std::lexicographical_compare(pa.begin_raw(),
+                                          pa.end_raw(),
+                                          pb.begin_raw(),
+                                          pb.end_raw());
+    });
+    node_faces.assign(nodes.size(), {});
+    for (unsigned int f = 0; f < faces.size(); ++f)
+      for (const unsigned int n : faces[f].nodes)
+        node_faces[n].push_back(f);
+  }
+
+
+
+  void
+  ContactSurface::update(const TrilinosWrappers::MPI::BlockVector &u,
+                         const Discretisation &discretisation)
+  {
+    std::vector<double> x(dim * nodes.size(), 0.);
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      if (discretisation.locally_owned_dofs.is_element(nodes[n].dofs[0]))
+        for (unsigned int c = 0; c < dim; ++c)
+          x[dim * n + c] = u(nodes[n].dofs[c]);
+    Utilities::MPI::sum(x, discretisation.dof_handler.get_communicator(), x);
+    for (unsigned int n = 0; n < nodes.size(); ++n)
+      for (unsigned int c = 0; c < dim; ++c)
+        nodes[n].current[c] = nodes[n].reference[c] + x[dim * n + c];
+  }
+
+
+
+  Quad9
+  ContactSurface::current_face(const unsigned int f) const
+  {
+    Quad9 q;
+    for (unsigned int n = 0; n < 9; ++n)
+      q.x[n] = nodes[faces[f].nodes[n]].current;
+    return q;
+  }
+
+
+
+  double
+  ContactSurface::smallest_face_size() const
+  {
+    double h = std::numeric_limits<double>::max();
+    for (const Face &f : faces)
+      for (const auto &[a, b] :
+           {std::pair{0u, 2u}, std::pair{2u, 8u}, std::pair{8u, 6u}, std::pair{6u, 0u}})
+        h = std::min(h,
+                     (nodes[f.nodes[a]].reference - nodes[f.nodes[b]].reference)
+                       .norm());
+    return h;
+  }
+
+
+
+  double
+  ContactSurface::largest_face_size() const
+  {
+    double h = 0;
+    for (const Face &f : faces)
+      for (const auto &[a, b] : {std::pair{0u, 8u}, std::pair{2u, 6u}})
+        h = std::max(h,
+                     (nodes[f.nodes[a]].reference - nodes[f.nodes[b]].reference)
+                       .norm());
+    return h;
+  }
+} // namespace DuctileContact
