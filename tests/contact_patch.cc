@@ -33,7 +33,8 @@ end
 subsection Bodies
   set Material ids = 1, 2
 end
-subsection Body 1)" + material +
+subsection Body 1)" +
+           material +
            R"(end
 subsection Body 2)" +
            material + R"(end
@@ -111,10 +112,10 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out = Testing::open_output();
 
-  const auto   block = Testing::run_scene(single_block_prm, "single_block");
-  const double top_uz      = block.at("u5_z").back();
-  const double lateral     = 1. + 2. * block.at("u5_x").back();
-  const double p_expected  = 1e6 / (lateral * lateral);
+  const auto   block   = Testing::run_scene(single_block_prm, "single_block");
+  const double top_uz  = block.at("u5_z").back();
+  const double lateral = 1. + 2. * block.at("u5_x").back();
+  const double p_expected = 1e6 / (lateral * lateral);
   std::cout << "single block: top u_z " << top_uz << ", lateral stretch "
             << lateral << ", Cauchy pressure " << p_expected << std::endl;
 
@@ -122,13 +123,13 @@ main(int argc, char **argv)
        {std::tuple{4u, 3u, "finer (upper) cube as slave"},
         std::tuple{3u, 4u, "coarser (lower) cube as slave"}})
     {
-      const auto s = Testing::run_scene(patch_prm(slave, master),
+      const auto   s     = Testing::run_scene(patch_prm(slave, master),
                                         "patch_" + std::to_string(slave));
-      const double p_max   = s.at("contact1_max_pressure").back();
-      const double p_min   = s.at("contact1_min_pressure").back();
-      const double force   = s.at("contact1_force_z").back();
-      const double uz      = s.at("u2_z").back();
-      const double pen     = s.at("contact1_max_penetration").back();
+      const double p_max = s.at("contact1_max_pressure").back();
+      const double p_min = s.at("contact1_min_pressure").back();
+      const double force = s.at("contact1_force_z").back();
+      const double uz    = s.at("u2_z").back();
+      const double pen   = s.at("contact1_max_penetration").back();
       // The slave normal points out of the slave body: down for the upper
       // cube, up for the lower one.
       const double sign = (slave == 4) ? -1. : 1.;
@@ -145,8 +146,8 @@ main(int argc, char **argv)
           << std::endl
           << "  penetration below the tolerance (1e-6 h): "
           << Testing::yes_no(pen < 1e-6 * 0.25) << std::endl
-          << "  active slave nodes: "
-          << s.at("contact1_active_nodes").back() << std::endl;
+          << "  active slave nodes: " << s.at("contact1_active_nodes").back()
+          << std::endl;
       std::cout << name << ": p " << p_min << " .. " << p_max << " (exact "
                 << p_expected << "), force " << force << ", top u_z " << uz
                 << " (single block " << top_uz << "), penetration " << pen

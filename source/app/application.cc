@@ -102,6 +102,22 @@ namespace DuctileContact
                   "the mesh of scene '" + parameters.mesh.scene +
                     "' has no boundary with this id (it has " +
                     join(boundaries) + ")");
+    for (const ContactPairParameters &c : parameters.contact_pairs)
+      for (const auto &[entry, id] :
+           {std::pair{"Slave boundary id", c.slave_boundary_id},
+            std::pair{"Master boundary id", c.master_boundary_id}})
+        check_input(boundaries.count(id) > 0,
+                    c.subsection() + "/" + entry,
+                    Utilities::to_string(id),
+                    "the id of a boundary of the mesh of scene '" +
+                      parameters.mesh.scene + "' (it has " + join(boundaries) +
+                      ")");
+    if (!parameters.contact_pairs.empty())
+      check_input(parameters.fe_degree == 2,
+                  "Finite elements/Polynomial degree",
+                  Utilities::to_string(parameters.fe_degree),
+                  "2 in a scene with contact (the mortar contact works on "
+                  "quad9 faces)");
   }
 
 

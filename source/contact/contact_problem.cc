@@ -35,8 +35,8 @@ namespace DuctileContact
 
 
   ContactProblem::ContactProblem(
-    const std::deque<ContactPairParameters> &pairs,
-    const Discretisation                    &discretisation,
+    const std::deque<ContactPairParameters>                    &pairs,
+    const Discretisation                                       &discretisation,
     const std::map<types::material_id, const BodyParameters *> &bodies)
       : pairs(pairs)
       , discretisation(discretisation)
@@ -70,17 +70,17 @@ namespace DuctileContact
         // eps_N = factor E / h for the slave body.
         const auto body = bodies.find(pair.slave.faces[0].material_id);
         Assert(body != bodies.end(), ExcInternalError());
-        const double mu = body->second->shear_modulus;
+        const double mu    = body->second->shear_modulus;
         const double kappa = body->second->bulk_modulus;
         const double E     = 9. * kappa * mu / (3. * kappa + mu);
         const double h     = pair.slave.smallest_face_size();
         pair.penalty       = prm.penalty_factor * E / h;
         pair.face_size     = h;
         pair.tolerance     = prm.penetration_tolerance * h;
-        pair.search_radius = prm.search_radius > 0. ?
-                               prm.search_radius :
-                               std::max(pair.slave.largest_face_size(),
-                                        pair.master.largest_face_size());
+        pair.search_radius = prm.search_radius > 0.
+                               ? prm.search_radius
+                               : std::max(pair.slave.largest_face_size(),
+                                          pair.master.largest_face_size());
         pair.candidates.assign(pair.slave.faces.size(), {});
         pair.multiplier.assign(pair.slave.nodes.size(), 0.);
         pair.committed_multiplier = pair.multiplier;
@@ -196,7 +196,7 @@ namespace DuctileContact
   ContactProblem::integrate(Pair &pair)
   {
     const ContactSurface &slave = pair.slave, &master = pair.master;
-    const unsigned int    n     = slave.nodes.size();
+    const unsigned int    n = slave.nodes.size();
     pair.D.assign(n, {});
     pair.M.assign(n, {});
     pair.normal.assign(n, Tensor<1, dim>());
@@ -223,7 +223,8 @@ namespace DuctileContact
       for (const unsigned int c : pair.candidates[f])
         {
           const Quad9 master_face = master.current_face(c);
-          for (const MortarPoint &q : mortar_points(slave_faces[f], master_face))
+          for (const MortarPoint &q :
+               mortar_points(slave_faces[f], master_face))
             {
               Quad9::shape(q.slave, ns);
               Quad9::shape(q.master, nm);
@@ -346,7 +347,8 @@ namespace DuctileContact
       }
     if (targets.tangent)
       targets.tangent->compress(VectorOperation::add);
-    for (auto *v : {targets.newton_rhs, targets.residual, targets.internal_force})
+    for (auto *v :
+         {targets.newton_rhs, targets.residual, targets.internal_force})
       if (v)
         v->compress(VectorOperation::add);
   }
@@ -360,7 +362,7 @@ namespace DuctileContact
     for (unsigned int p = 0; p < data.size(); ++p)
       if (summaries[p].max_penetration > data[p].tolerance)
         {
-          done                = false;
+          done               = false;
           data[p].multiplier = data[p].pressure;
         }
     return done;

@@ -25,10 +25,10 @@ namespace DuctileContact
 
 
   void
-  ContactSurface::gather(const Discretisation      &discretisation,
-                         const types::boundary_id   id)
+  ContactSurface::gather(const Discretisation    &discretisation,
+                         const types::boundary_id id)
   {
-    boundary_id = id;
+    boundary_id             = id;
     const auto &dof_handler = discretisation.dof_handler;
     const auto &mapping     = discretisation.mapping[0];
 
@@ -63,7 +63,7 @@ namespace DuctileContact
                 const auto ci = fe.system_to_component_index(i);
                 if (ci.first != 0 || !fe.has_support_on_face(i, f))
                   continue;
-                const Point<dim> p = base.unit_support_point(ci.second);
+                const Point<dim>   p = base.unit_support_point(ci.second);
                 const unsigned int a = std::lround(2. * p[c1]);
                 const unsigned int b = std::lround(2. * p[c2]);
                 const Point<dim>   X =
@@ -79,9 +79,8 @@ namespace DuctileContact
             // Orientation: x_xi x x_eta must point out of the cell.
             Quad9 q;
             for (unsigned int n = 0; n < 9; ++n)
-              q.x[n] = Point<dim>(node_data[n][3],
-                                  node_data[n][4],
-                                  node_data[n][5]);
+              q.x[n] =
+                Point<dim>(node_data[n][3], node_data[n][4], node_data[n][5]);
             const Tensor<1, dim> out = q.x[4] - cell->center();
             if (q.normal(Point<2>(0.5, 0.5)) * out < 0.)
               for (unsigned int a = 0; a < 3; ++a)
@@ -110,8 +109,7 @@ namespace DuctileContact
               Node          node;
               for (unsigned int c = 0; c < dim; ++c)
                 {
-                  node.dofs[c] =
-                    static_cast<types::global_dof_index>(data[c]);
+                  node.dofs[c] = static_cast<types::global_dof_index>(data[c]);
                   node.reference[c] = data[3 + c];
                 }
               node.current = node.reference;
@@ -175,11 +173,13 @@ namespace DuctileContact
   {
     double h = std::numeric_limits<double>::max();
     for (const Face &f : faces)
-      for (const auto &[a, b] :
-           {std::pair{0u, 2u}, std::pair{2u, 8u}, std::pair{8u, 6u}, std::pair{6u, 0u}})
-        h = std::min(h,
-                     (nodes[f.nodes[a]].reference - nodes[f.nodes[b]].reference)
-                       .norm());
+      for (const auto &[a, b] : {std::pair{0u, 2u},
+                                 std::pair{2u, 8u},
+                                 std::pair{8u, 6u},
+                                 std::pair{6u, 0u}})
+        h = std::min(
+          h,
+          (nodes[f.nodes[a]].reference - nodes[f.nodes[b]].reference).norm());
     return h;
   }
 
@@ -191,9 +191,9 @@ namespace DuctileContact
     double h = 0;
     for (const Face &f : faces)
       for (const auto &[a, b] : {std::pair{0u, 8u}, std::pair{2u, 6u}})
-        h = std::max(h,
-                     (nodes[f.nodes[a]].reference - nodes[f.nodes[b]].reference)
-                       .norm());
+        h = std::max(
+          h,
+          (nodes[f.nodes[a]].reference - nodes[f.nodes[b]].reference).norm());
     return h;
   }
 } // namespace DuctileContact

@@ -58,8 +58,7 @@ namespace DuctileContact
     const std::vector<TrianglePoint> &
     triangle_rule()
     {
-      static const std::vector<TrianglePoint> rule =
-        make_triangle_rule(4);
+      static const std::vector<TrianglePoint> rule = make_triangle_rule(4);
       return rule;
     }
 
@@ -100,12 +99,12 @@ namespace DuctileContact
         output.clear();
         for (std::size_t i = 0; i < input.size(); ++i)
           {
-            const Point<2> &p     = input[i];
-            const Point<2> &q     = input[(i + 1) % input.size()];
-            const double    dp    = orient(a, b, p);
-            const double    dq    = orient(a, b, q);
-            const bool      p_in  = dp >= 0.;
-            const bool      q_in  = dq >= 0.;
+            const Point<2> &p    = input[i];
+            const Point<2> &q    = input[(i + 1) % input.size()];
+            const double    dp   = orient(a, b, p);
+            const double    dq   = orient(a, b, q);
+            const bool      p_in = dp >= 0.;
+            const bool      q_in = dq >= 0.;
             if (p_in)
               output.push_back(p);
             if (p_in != q_in)
@@ -126,19 +125,18 @@ namespace DuctileContact
     std::vector<MortarPoint> points;
     for (unsigned int sq = 0; sq < 4; ++sq)
       {
-        const auto     s_nodes = sub_quad(sq % 2, sq / 2);
-        Point<dim>     centre;
+        const auto s_nodes = sub_quad(sq % 2, sq / 2);
+        Point<dim> centre;
         for (const unsigned int i : s_nodes)
           centre += 0.25 * slave.x[i];
-        Tensor<1, dim> n0 = cross_product_3d(slave.x[s_nodes[2]] -
-                                               slave.x[s_nodes[0]],
-                                             slave.x[s_nodes[3]] -
-                                               slave.x[s_nodes[1]]);
+        Tensor<1, dim> n0 =
+          cross_product_3d(slave.x[s_nodes[2]] - slave.x[s_nodes[0]],
+                           slave.x[s_nodes[3]] - slave.x[s_nodes[1]]);
         n0 /= n0.norm();
         Tensor<1, dim> t1 = slave.x[s_nodes[1]] - slave.x[s_nodes[0]];
         t1 -= (t1 * n0) * n0;
         t1 /= t1.norm();
-        const Tensor<1, dim> t2 = cross_product_3d(n0, t1);
+        const Tensor<1, dim> t2       = cross_product_3d(n0, t1);
         const auto           in_plane = [&](const Point<dim> &p) {
           const Tensor<1, dim> d = p - centre;
           return Point<2>(d * t1, d * t2);
@@ -155,10 +153,9 @@ namespace DuctileContact
         for (unsigned int mq = 0; mq < 4; ++mq)
           {
             const auto     m_nodes = sub_quad(mq % 2, mq / 2);
-            Tensor<1, dim> n_m     = cross_product_3d(master.x[m_nodes[2]] -
-                                                    master.x[m_nodes[0]],
-                                                  master.x[m_nodes[3]] -
-                                                    master.x[m_nodes[1]]);
+            Tensor<1, dim> n_m =
+              cross_product_3d(master.x[m_nodes[2]] - master.x[m_nodes[0]],
+                               master.x[m_nodes[3]] - master.x[m_nodes[1]]);
             if (n_m * n0 >= 0.)
               continue; // the sub-quads do not face each other
             std::vector<Point<2>> m_polygon;
@@ -190,8 +187,8 @@ namespace DuctileContact
                   continue;
                 for (const TrianglePoint &g : triangle_rule())
                   {
-                    const Point<2> q2 = g.l0 * centroid + g.l1 * a + g.l2 * b;
-                    const Point<dim> q = centre + q2[0] * t1 + q2[1] * t2;
+                    const Point<2>   q2 = g.l0 * centroid + g.l1 * a + g.l2 * b;
+                    const Point<dim> q  = centre + q2[0] * t1 + q2[1] * t2;
                     Point<2>         xi_s, xi_m;
                     if (!slave.project_along(q, n0, s_start, xi_s) ||
                         !master.project_along(q, n0, m_start, xi_m))

@@ -93,7 +93,7 @@ namespace DuctileContact
                        Point<2>             &xi) const
   {
     // Solve x(xi, eta) - p - t d = 0 for (xi, eta, t).
-    xi                    = start;
+    xi                   = start;
     const double size    = (x[8] - x[0]).norm() + (x[8] - x[4]).norm();
     double       t_along = 0.;
     for (unsigned int it = 0; it < 20; ++it)

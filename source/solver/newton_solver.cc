@@ -121,7 +121,12 @@ namespace DuctileContact
       return solve_coupled(step, u, internal_force);
 
     u_ghosted = u;
-    if (contact->begin_step(u_ghosted))
+    bool new_couplings;
+    {
+      TimerOutput::Scope scope(timer, "contact: search");
+      new_couplings = contact->begin_step(u_ghosted);
+    }
+    if (new_couplings)
       setup(); // the candidate pairs changed: new couplings
     NewtonReport       total;
     const unsigned int max_augmentations =
@@ -359,7 +364,10 @@ namespace DuctileContact
           report.info =
             assembler.assemble(u_ghosted, step, constraints, targets);
           if (contact)
-            contact->assemble(u_ghosted, constraints, targets);
+            {
+              TimerOutput::Scope scope(timer, "contact: integration, assembly");
+              contact->assemble(u_ghosted, constraints, targets);
+            }
         }
         const Norms  n     = block_norms();
         const double scale = internal_force.block(0).l2_norm();
@@ -419,7 +427,11 @@ namespace DuctileContact
               trial_info =
                 assembler.assemble(u_ghosted, step, constraints, targets);
               if (contact)
-                contact->assemble(u_ghosted, constraints, targets);
+                {
+                  TimerOutput::Scope scope(timer,
+                                           "contact: integration, assembly");
+                  contact->assemble(u_ghosted, constraints, targets);
+                }
               trial_n     = block_norms();
               trial_r     = merit(trial_n, tol);
               trial_scale = internal_force.block(0).l2_norm();

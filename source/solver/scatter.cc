@@ -20,15 +20,11 @@ namespace DuctileContact
       constraints.distribute_local_to_global(
         matrix, rhs, indices, *targets.tangent, *targets.newton_rhs);
     else if (targets.newton_rhs)
-      constraints.distribute_local_to_global(rhs,
-                                             indices,
-                                             *targets.newton_rhs);
+      constraints.distribute_local_to_global(rhs, indices, *targets.newton_rhs);
     if (targets.residual)
       {
         rhs *= -1.;
-        constraints.distribute_local_to_global(rhs,
-                                               indices,
-                                               *targets.residual);
+        constraints.distribute_local_to_global(rhs, indices, *targets.residual);
       }
     // Condensed with the hanging-node constraints only: then the sum of
     // f_int over the DoFs of a boundary is the force through it even

@@ -20,7 +20,7 @@ namespace DuctileContact
    */
   struct ContactPairParameters
   {
-    unsigned int               number            = 1;
+    unsigned int               number             = 1;
     dealii::types::boundary_id slave_boundary_id  = 0;
     dealii::types::boundary_id master_boundary_id = 1;
     /// Coulomb coefficient mu_c (only 0 is implemented so far).

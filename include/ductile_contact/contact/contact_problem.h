@@ -2,8 +2,8 @@
 
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/block_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <ductile_contact/contact/contact_parameters.h>
@@ -24,7 +24,7 @@ namespace DuctileContact
     /// [N] (its negative acts on the master).
     dealii::Tensor<1, dim> force;
     /// Sum of A_j over the active slave nodes [m^2].
-    double area = 0.;
+    double       area         = 0.;
     unsigned int active_nodes = 0;
     /// Largest nodal penetration max(0, -g_j / A_j) over the slave nodes
     /// [m].
@@ -126,7 +126,7 @@ namespace DuctileContact
     struct Pair
     {
       ContactSurface slave, master;
-      double         penalty = 0.; ///< eps_N [Pa/m]
+      double         penalty       = 0.;                 ///< eps_N [Pa/m]
       double         search_radius = 0., tolerance = 0.; ///< [m]
       double         face_size = 0.; ///< smallest slave face size [m]
       /// Candidate master faces of each slave face.
@@ -147,14 +147,14 @@ namespace DuctileContact
 
     /// The slave and master nodes that node @p j couples to.
     void
-    coupled_nodes(const Pair               &pair,
-                  const unsigned int        j,
+    coupled_nodes(const Pair                &pair,
+                  const unsigned int         j,
                   std::vector<unsigned int> &slave_nodes,
                   std::vector<unsigned int> &master_nodes) const;
 
     const Discretisation &discretisation;
     const std::map<dealii::types::material_id, const BodyParameters *> bodies;
-    std::vector<Pair>               data;
+    std::vector<Pair>                                                  data;
     std::vector<ContactPairSummary> summaries;
   };
 } // namespace DuctileContact

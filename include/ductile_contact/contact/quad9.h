@@ -22,10 +22,10 @@ namespace DuctileContact
 
     /// Lagrange shape functions N_i(xi, eta) and their derivatives.
     static void
-    shape(const dealii::Point<2>  &xi,
-          std::array<double, 9>   &values,
-          std::array<double, 9>   *d_xi  = nullptr,
-          std::array<double, 9>   *d_eta = nullptr);
+    shape(const dealii::Point<2> &xi,
+          std::array<double, 9>  &values,
+          std::array<double, 9>  *d_xi  = nullptr,
+          std::array<double, 9>  *d_eta = nullptr);
 
     dealii::Point<dim>
     position(const dealii::Point<2> &xi) const;

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Contact cost against the number of contact faces (issue #5 benchmark):
+# the patch test of tests/contact_patch with N x N slave faces (upper cube)
+# on (3N/4) x (3N/4) master faces, swirled meshes, 2 load steps. Prints,
+# per N, the slave faces, unknowns, the time of one contact search (once
+# per load step) and of one contact integration + assembly (every Newton
+# iteration and line-search trial), and the pressure spread (patch test).
+# Usage: benchmarks/contact/scaling/run.sh [NP]   (default 2 ranks)
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/../../../scripts/env.sh"
+np=${1:-2}
+exe="$build_dir/ductile-contact"
+[[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
+mkdir -p "$here/runs"
+for n in 4 8 16 24 32; do
+  low=$(( (3 * n + 3) / 4 ))
+  dir="$here/runs/n$n"
+  mkdir -p "$dir"
+  mesh="$dir/patch.msh"
+  /usr/bin/python3 "$here/../../../tests/meshes/make_contact_patch.py" "$low" "$n" 10 "$mesh" > /dev/null
+  solver=direct
+  (( n > 16 )) && solver=gmres-amg
+  sed -e "s|@MESH@|$mesh|" -e "s|@DIR@|$dir|" -e "s|@SOLVER@|$solver|" \
+    "$here/scene.prm.in" > "$dir/scene.prm"
+  echo "== N = $n (master $low), $solver"
+  mpirun -np "$np" "$exe" "$dir/scene.prm" > "$dir/screen.txt" 2>&1 ||
+    echo "   failed, see $dir/screen.txt"
+  rm -f "$mesh"
+done
+/usr/bin/python3 "$here/report.py" "$here"
