@@ -37,11 +37,10 @@ namespace
         // downward faces: swap the parameters, so x_xi x x_eta = -e_z
         const double u = up ? xi[0] : xi[1], v = up ? xi[1] : xi[0];
         const double x = u - 0.5, y = v - 0.5;
-        q.x[i] = Point<dim>(0.5 + dx + std::cos(angle) * x -
-                              std::sin(angle) * y,
-                            0.5 + dy + std::sin(angle) * x +
-                              std::cos(angle) * y,
-                            z);
+        q.x[i] =
+          Point<dim>(0.5 + dx + std::cos(angle) * x - std::sin(angle) * y,
+                     0.5 + dy + std::sin(angle) * x + std::cos(angle) * y,
+                     z);
       }
     return q;
   }
@@ -70,12 +69,12 @@ main(int argc, char **argv)
       << std::endl;
 
   {
-    const auto   points = mortar_points(slave, square(0., false));
-    double       worst  = 0;
+    const auto points = mortar_points(slave, square(0., false));
+    double     worst  = 0;
     for (const auto &p : points)
       // the downward face has its parameters swapped
-      worst = std::max(worst,
-                       p.slave.distance(Point<2>(p.master[1], p.master[0])));
+      worst =
+        std::max(worst, p.slave.distance(Point<2>(p.master[1], p.master[0])));
     out << "identical faces: area 1 (1e-13): "
         << Testing::yes_no(std::abs(total_weight(points) - 1.) < 1e-13)
         << ", same parameters on both faces (1e-12): "
@@ -88,7 +87,7 @@ main(int argc, char **argv)
         << std::endl;
   }
   {
-    const auto   points = mortar_points(slave, square(0., false, M_PI / 4));
+    const auto   points  = mortar_points(slave, square(0., false, M_PI / 4));
     const double octagon = 2. * (std::sqrt(2.) - 1.);
     out << "master rotated by 45 degrees: octagon area (1e-13): "
         << Testing::yes_no(std::abs(total_weight(points) - octagon) < 1e-13)

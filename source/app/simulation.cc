@@ -363,7 +363,11 @@ namespace DuctileContact
     committed    = commit({0., ls.time_step, &old_solution, &history});
     record_step(0, 0., 0., NewtonReport(), 0);
     if (interval > 0)
-      writer->write(0, 0., u_ghosted, cell_quantities);
+      {
+        writer->write(0, 0., u_ghosted, cell_quantities);
+        if (contact)
+          contact->write_output(parameters.output.directory, 0, 0.);
+      }
 
     unsigned int cutbacks = 0;
     while (t < T - eps)
@@ -424,6 +428,8 @@ namespace DuctileContact
           {
             TimerOutput::Scope scope(timer, "output");
             writer->write(step, t, u_ghosted, cell_quantities);
+            if (contact)
+              contact->write_output(parameters.output.directory, step, t);
           }
 
         const double elapsed = MPI_Wtime() - wall_start;

@@ -1,10 +1,12 @@
 #include <deal.II/base/bounding_box.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/rtree.h>
 
 #include <ductile_contact/contact/contact_problem.h>
+#include <ductile_contact/contact/contact_writer.h>
 #include <ductile_contact/contact/mortar_segments.h>
 #include <ductile_contact/core/input_error.h>
 #include <ductile_contact/solver/scatter.h>
@@ -20,6 +22,43 @@ namespace DuctileContact
 
   namespace
   {
+    /**
+     * Coefficients a_ik of the dual (biorthogonal) basis Phi_i = sum_k a_ik
+     * N_k of a quad9 face (Wohlmuth 2000): int Phi_i N_k dA = delta_ik int
+     * N_k dA over the face, i.e. A = D_e M_e^-1 with the face's mass matrix
+     * M_e and D_e = diag(int N_i dA) (positive for quad9, so no basis
+     * transformation is needed). sum_i Phi_i = 1, so uniform pressures
+     * are still represented exactly.
+     */
+    FullMatrix<double>
+    dual_basis(const Quad9 &face)
+    {
+      const QGauss<2>       gauss(4);
+      FullMatrix<double>    mass(9, 9), coefficients(9, 9);
+      Vector<double>        lumped(9);
+      std::array<double, 9> n;
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+        {
+          const auto   t = face.tangents(gauss.point(q));
+          const double dA =
+            cross_product_3d(t[0], t[1]).norm() * gauss.weight(q);
+          Quad9::shape(gauss.point(q), n);
+          for (unsigned int i = 0; i < 9; ++i)
+            {
+              lumped[i] += n[i] * dA;
+              for (unsigned int k = 0; k < 9; ++k)
+                mass(i, k) += n[i] * n[k] * dA;
+            }
+        }
+      mass.gauss_jordan();
+      for (unsigned int i = 0; i < 9; ++i)
+        for (unsigned int k = 0; k < 9; ++k)
+          coefficients(i, k) = lumped[i] * mass(i, k);
+      return coefficients;
+    }
+
+
+
     BoundingBox<dim>
     face_box(const ContactSurface &surface, const unsigned int f, double r)
     {
@@ -50,7 +89,9 @@ namespace DuctileContact
   ContactProblem::setup()
   {
     data.assign(pairs.size(), Pair());
+    surface = IndexSet(discretisation.dof_handler.n_dofs());
     summaries.assign(pairs.size(), ContactPairSummary());
+    output_records.assign(pairs.size(), {});
     for (unsigned int p = 0; p < pairs.size(); ++p)
       {
         const ContactPairParameters &prm  = pairs[p];
@@ -82,9 +123,14 @@ namespace DuctileContact
                                : std::max(pair.slave.largest_face_size(),
                                           pair.master.largest_face_size());
         pair.candidates.assign(pair.slave.faces.size(), {});
+        for (const ContactSurface *side : {&pair.slave, &pair.master})
+          for (const auto &node : side->nodes)
+            for (const auto d : node.dofs)
+              surface.add_index(d);
         pair.multiplier.assign(pair.slave.nodes.size(), 0.);
         pair.committed_multiplier = pair.multiplier;
       }
+    surface.compress();
   }
 
 
@@ -130,14 +176,64 @@ namespace DuctileContact
   IndexSet
   ContactProblem::surface_dofs() const
   {
-    IndexSet dofs(discretisation.dof_handler.n_dofs());
-    for (const Pair &pair : data)
-      for (const ContactSurface *surface : {&pair.slave, &pair.master})
-        for (const auto &node : surface->nodes)
-          for (const auto d : node.dofs)
-            dofs.add_index(d);
-    dofs.compress();
-    return dofs;
+    return surface;
+  }
+
+
+
+  void
+  ContactProblem::extend_constraints(
+    const AffineConstraints<double> &constraints,
+    AffineConstraints<double>       &extended) const
+  {
+    // Lines of the surface DoFs this rank owns: dof, inhomogeneity, number
+    // of entries, (column, weight) pairs.
+    std::vector<double> mine;
+    for (const auto dof : surface)
+      if (discretisation.locally_owned_dofs.is_element(dof) &&
+          constraints.is_constrained(dof))
+        {
+          const auto *entries = constraints.get_constraint_entries(dof);
+          mine.push_back(dof);
+          mine.push_back(constraints.get_inhomogeneity(dof));
+          mine.push_back(entries ? entries->size() : 0);
+          if (entries)
+            for (const auto &[column, weight] : *entries)
+              {
+                mine.push_back(column);
+                mine.push_back(weight);
+              }
+        }
+    const auto all =
+      Utilities::MPI::all_gather(discretisation.dof_handler.get_communicator(),
+                                 mine);
+
+    IndexSet lines = discretisation.locally_relevant_dofs;
+    lines.add_indices(surface);
+    extended.clear();
+    extended.reinit(lines);
+    extended.merge(constraints,
+                   AffineConstraints<double>::no_conflicts_allowed,
+                   true);
+    for (const auto &records : all)
+      for (std::size_t r = 0; r < records.size();)
+        {
+          const auto   dof = static_cast<types::global_dof_index>(records[r]);
+          const double inhomogeneity = records[r + 1];
+          const unsigned int n = static_cast<unsigned int>(records[r + 2]);
+          if (!extended.is_constrained(dof))
+            {
+              extended.add_line(dof);
+              for (unsigned int e = 0; e < n; ++e)
+                extended.add_entry(dof,
+                                   static_cast<types::global_dof_index>(
+                                     records[r + 3 + 2 * e]),
+                                   records[r + 4 + 2 * e]);
+              extended.set_inhomogeneity(dof, inhomogeneity);
+            }
+          r += 3 + 2 * n;
+        }
+    extended.close();
   }
 
 
@@ -168,6 +264,8 @@ namespace DuctileContact
     TrilinosWrappers::BlockSparsityPattern &sp,
     const AffineConstraints<double>        &constraints) const
   {
+    AffineConstraints<double> all_constraints;
+    extend_constraints(constraints, all_constraints);
     std::vector<unsigned int>            s, m;
     std::vector<types::global_dof_index> indices;
     for (const Pair &pair : data)
@@ -186,7 +284,7 @@ namespace DuctileContact
             indices.insert(indices.end(),
                            pair.master.nodes[l].dofs.begin(),
                            pair.master.nodes[l].dofs.end());
-          constraints.add_entries_local_to_global(indices, sp, false);
+          all_constraints.add_entries_local_to_global(indices, sp, false);
         }
   }
 
@@ -217,28 +315,43 @@ namespace DuctileContact
     for (auto &normal : pair.normal)
       normal /= normal.norm();
 
-    // Segment-based D and M.
-    std::array<double, 9> ns, nm;
+    // Segment-based D and M with the multiplier basis Phi of each face.
+    const bool dual = pairs[&pair - data.data()].multiplier_basis == "dual";
+    std::array<double, 9> ns, nm, phi;
+    FullMatrix<double>    dual_coefficients;
     for (unsigned int f = 0; f < slave.faces.size(); ++f)
-      for (const unsigned int c : pair.candidates[f])
-        {
-          const Quad9 master_face = master.current_face(c);
-          for (const MortarPoint &q :
-               mortar_points(slave_faces[f], master_face))
-            {
-              Quad9::shape(q.slave, ns);
-              Quad9::shape(q.master, nm);
-              for (unsigned int i = 0; i < 9; ++i)
-                {
-                  const unsigned int j  = slave.faces[f].nodes[i];
-                  const double       wj = q.weight * ns[i];
-                  for (unsigned int k = 0; k < 9; ++k)
-                    pair.D[j][slave.faces[f].nodes[k]] += wj * ns[k];
-                  for (unsigned int l = 0; l < 9; ++l)
-                    pair.M[j][master.faces[c].nodes[l]] += wj * nm[l];
-                }
-            }
-        }
+      {
+        if (pair.candidates[f].empty())
+          continue;
+        if (dual)
+          dual_coefficients = dual_basis(slave_faces[f]);
+        for (const unsigned int c : pair.candidates[f])
+          {
+            const Quad9 master_face = master.current_face(c);
+            for (const MortarPoint &q :
+                 mortar_points(slave_faces[f], master_face))
+              {
+                Quad9::shape(q.slave, ns);
+                Quad9::shape(q.master, nm);
+                for (unsigned int i = 0; i < 9; ++i)
+                  {
+                    phi[i] = dual ? 0. : ns[i];
+                    if (dual)
+                      for (unsigned int k = 0; k < 9; ++k)
+                        phi[i] += dual_coefficients(i, k) * ns[k];
+                  }
+                for (unsigned int i = 0; i < 9; ++i)
+                  {
+                    const unsigned int j  = slave.faces[f].nodes[i];
+                    const double       wj = q.weight * phi[i];
+                    for (unsigned int k = 0; k < 9; ++k)
+                      pair.D[j][slave.faces[f].nodes[k]] += wj * ns[k];
+                    for (unsigned int l = 0; l < 9; ++l)
+                      pair.M[j][master.faces[c].nodes[l]] += wj * nm[l];
+                  }
+              }
+          }
+      }
 
     // Weighted gaps and multipliers.
     ContactPairSummary &summary = summaries[&pair - data.data()];
@@ -292,6 +405,8 @@ namespace DuctileContact
                            const AffineConstraints<double> &constraints,
                            const AssemblyTargets           &targets)
   {
+    AffineConstraints<double> all_constraints;
+    extend_constraints(constraints, all_constraints);
     FullMatrix<double>                   matrix;
     Vector<double>                       rhs, f_int;
     std::vector<types::global_dof_index> indices;
@@ -340,7 +455,7 @@ namespace DuctileContact
                     rhs,
                     f_int,
                     indices,
-                    constraints,
+                    all_constraints,
                     discretisation.hanging_node_constraints,
                     targets);
           }
@@ -375,5 +490,41 @@ namespace DuctileContact
   {
     for (Pair &pair : data)
       pair.committed_multiplier = pair.pressure;
+  }
+
+
+
+  void
+  ContactProblem::write_output(const std::string &directory,
+                               const unsigned int step,
+                               const double       time)
+  {
+    if (Utilities::MPI::this_mpi_process(
+          discretisation.dof_handler.get_communicator()) != 0)
+      return;
+    for (unsigned int p = 0; p < data.size(); ++p)
+      {
+        const Pair      &pair = data[p];
+        ContactNodalData nodal;
+        nodal.surface  = &pair.slave;
+        nodal.pressure = pair.pressure;
+        nodal.normal   = pair.normal;
+        nodal.active   = pair.active;
+        nodal.gap.resize(pair.gap.size());
+        for (unsigned int j = 0; j < pair.gap.size(); ++j)
+          nodal.gap[j] = pair.area[j] > 0. ? pair.gap[j] / pair.area[j] : 0.;
+        // Before the first assembly (step 0) nothing is computed yet.
+        const std::size_t n = pair.slave.nodes.size();
+        nodal.pressure.resize(n, 0.);
+        nodal.normal.resize(n);
+        nodal.active.resize(n, false);
+        nodal.gap.resize(n, 0.);
+        write_contact_surface(nodal,
+                              directory,
+                              "contact" + std::to_string(pairs[p].number),
+                              step,
+                              time,
+                              output_records[p]);
+      }
   }
 } // namespace DuctileContact

@@ -33,6 +33,9 @@ namespace DuctileContact
     /// Largest allowed penetration, relative to the smallest slave face
     /// size.
     double penetration_tolerance = 1e-6;
+    /// Multiplier basis on the slave faces: "dual" (biorthogonal, D
+    /// diagonal) or "standard" (Phi_j = N_j).
+    std::string multiplier_basis = "dual";
     /// Uzawa updates per load step before the step counts as failed.
     unsigned int max_augmentations = 30;
 

@@ -13,6 +13,8 @@
 
 #include <deque>
 #include <map>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace DuctileContact
@@ -20,8 +22,9 @@ namespace DuctileContact
   /// State of one contact pair after an assembly (same on every rank).
   struct ContactPairSummary
   {
-    /// Sum of the nodal contact forces on the slave side, lambda_j A_j n_j
-    /// [N] (its negative acts on the master).
+    /// Force the slave body exerts on the master, sum of lambda_j A_j n_j
+    /// with n_j the slave's outward normal [N] (its negative acts on the
+    /// slave).
     dealii::Tensor<1, dim> force;
     /// Sum of A_j over the active slave nodes [m^2].
     double       area         = 0.;
@@ -114,6 +117,13 @@ namespace DuctileContact
     void
     commit();
 
+    /// Writes the slave surfaces with pressure and gap of the last
+    /// assembly (contact_writer.h; rank 0 writes, the data are replicated).
+    void
+    write_output(const std::string &directory,
+                 const unsigned int step,
+                 const double       time);
+
     const std::vector<ContactPairSummary> &
     summary() const
     {
@@ -140,6 +150,16 @@ namespace DuctileContact
       std::vector<bool>                           active;
     };
 
+    /// @p constraints (which know the locally relevant DoFs only) plus the
+    /// constraints of every contact-surface DoF, gathered from the ranks
+    /// that own them: a contact row of this rank may couple to master DoFs
+    /// that are neither owned nor ghosted here, and a Dirichlet condition
+    /// on them (a symmetry plane crossing the surface) must still be
+    /// applied.
+    void
+    extend_constraints(const dealii::AffineConstraints<double> &constraints,
+                       dealii::AffineConstraints<double>       &extended) const;
+
     /// D, M, normals, A_j, g_j and lambda_j of @p pair on its current
     /// geometry.
     void
@@ -156,5 +176,9 @@ namespace DuctileContact
     const std::map<dealii::types::material_id, const BodyParameters *> bodies;
     std::vector<Pair>                                                  data;
     std::vector<ContactPairSummary> summaries;
+    /// DoFs of all contact surfaces.
+    dealii::IndexSet surface;
+    /// (time, file) of the surface outputs written, per pair.
+    std::vector<std::vector<std::pair<double, std::string>>> output_records;
   };
 } // namespace DuctileContact

@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""results.md and hertz.png of benchmarks/contact/hertz: fitted contact
+half-width a and peak pressure p0 against Hertz, per mesh and basis, with
+run times. Usage: report.py DIR"""
+import glob
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+here = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
+E, nu, R = 1e9, 0.3, 1.0
+E_star = E / (2 * (1 - nu ** 2))  # two equal bodies, plane strain
+
+
+def fit(nodes, a_hertz):
+    """a, p0 from p^2 = p0^2 - (p0/a)^2 x^2 over the active nodes at
+    x <= 0.8 a (Hertz): the nodes near the edge carry the discretisation
+    of the square-root edge."""
+    x, p = nodes[:, 3], nodes[:, 6]
+    active = p > 0
+    x, p = x[active], p[active]
+    sel = x <= 0.8 * a_hertz
+    A = np.vstack([np.ones(sel.sum()), x[sel] ** 2]).T
+    c, *_ = np.linalg.lstsq(A, p[sel] ** 2, rcond=None)
+    return math.sqrt(-c[0] / c[1]), math.sqrt(c[0])
+
+
+rows = []
+for d in sorted(glob.glob(os.path.join(here, "runs", "h*-*"))):
+    m = re.match(r"h(\d+)-(\w+)$", os.path.basename(d))
+    if not m or not os.path.exists(os.path.join(d, "statistics")):
+        continue
+    lines = [l for l in open(os.path.join(d, "statistics")).read().split("\n") if l.strip()]
+    names = lines[0].split()
+    last = dict(zip(names, map(float, lines[-1].split())))
+    step = int(last["step"])
+    nodes = np.loadtxt(os.path.join(d, f"contact1_{step:05d}.txt"), skiprows=1)
+    thickness = nodes[:, 2].max()  # the slab is one element thick
+    P = 2 * abs(last["F2_y"]) / thickness
+    a_h = math.sqrt(4 * P * R / (math.pi * E_star))
+    p0_h = 2 * P / (math.pi * a_h)
+    a, p0 = fit(nodes, a_h)
+    centre = nodes[(nodes[:, 3] < 1e-12) & (nodes[:, 6] > 0), 6].max()
+    screen = open(os.path.join(d, "screen.txt")).read()
+    wall = float(re.search(r"Total wallclock time elapsed since start\s*\|\s*([\d.e+-]+)s", screen).group(1))
+    dofs = int(re.search(r"DoFs: (\d+)", screen).group(1))
+    newton = int(sum(float(l.split()[names.index("newton_iterations")]) for l in lines[1:]))
+    rows.append(dict(ratio=int(m.group(1)), basis=m.group(2), dofs=dofs, P=P, a=a, a_h=a_h,
+                     p0=p0, p0_h=p0_h, centre=centre, wall=wall, newton=newton,
+                     pen=last["contact1_max_penetration"]))
+
+rows.sort(key=lambda r: (r["basis"], r["ratio"]))
+with open(os.path.join(here, "results.md"), "w") as out:
+    out.write("| basis | h | unknowns | P [N/m] | a fit / Hertz - 1 | p0 fit / Hertz - 1 | "
+              "centre node p / p0 Hertz - 1 | Newton its | max penetration [m] | wall [s] |\n")
+    out.write("|---|---|---|---|---|---|---|---|---|---|\n")
+    for r in rows:
+        out.write(f"| {r['basis']} | a/{r['ratio']} | {r['dofs']} | {r['P']:.5g} | "
+                  f"{r['a'] / r['a_h'] - 1:+.2e} | {r['p0'] / r['p0_h'] - 1:+.2e} | "
+                  f"{r['centre'] / r['p0_h'] - 1:+.2e} | {r['newton']} | {r['pen']:.1e} | {r['wall']:.1f} |\n")
+print(open(os.path.join(here, "results.md")).read())
+try:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+except ImportError:
+    sys.exit(0)
+fig, (l, r) = plt.subplots(1, 2, figsize=(11, 4.3))
+for basis, mk in (("dual", "o"), ("standard", "s")):
+    sub = [x for x in rows if x["basis"] == basis]
+    if sub:
+        l.loglog([x["wall"] for x in sub], [abs(x["a"] / x["a_h"] - 1) for x in sub], mk + "-", label=f"a, {basis}")
+        l.loglog([x["wall"] for x in sub], [abs(x["p0"] / x["p0_h"] - 1) for x in sub], mk + "--", label=f"p0, {basis}")
+l.set_xlabel("wall time [s]")
+l.set_ylabel("relative error against Hertz")
+l.grid(True, which="both", alpha=0.3)
+l.legend(fontsize=7)
+for x in rows:
+    if x["basis"] == "dual" or x["ratio"] == 8:
+        d = os.path.join(here, "runs", f"h{x['ratio']}-{x['basis']}")
+        lines = [q for q in open(os.path.join(d, "statistics")).read().split("\n") if q.strip()]
+        step = int(float(lines[-1].split()[0]))
+        n = np.loadtxt(os.path.join(d, f"contact1_{step:05d}.txt"), skiprows=1)
+        n = n[(n[:, 2] < 1e-12) & (n[:, 6] > 0)]
+        n = n[np.argsort(n[:, 3])]
+        r.plot(n[:, 3] / x["a_h"], n[:, 6] / x["p0_h"], ".-", label=f"{x['basis']} h = a/{x['ratio']}")
+xs = np.linspace(0, 1, 200)
+r.plot(xs, np.sqrt(1 - xs ** 2), "k-", lw=2, label="Hertz")
+r.set_xlabel("x / a (Hertz)")
+r.set_ylabel("nodal pressure / p0 (Hertz)")
+r.legend(fontsize=7)
+r.grid(True, alpha=0.3)
+fig.tight_layout()
+fig.savefig(os.path.join(here, "hertz.png"), dpi=120)
+print("wrote hertz.png")

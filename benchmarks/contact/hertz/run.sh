@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Hertz line contact (issue #5 benchmark, validation.md rung 11): contact
+# half-width a and peak pressure p0 against the closed forms
+# a = sqrt(4 P R / (pi E*)), p0 = 2 P / (pi a) for the load P the run
+# carries, against run time, for h = a/2, a/4, a/8 at the contact, dual
+# and standard multiplier bases. a and p0 come from a least-squares fit of
+# p^2 = p0^2 (1 - x^2 / a^2) to the nodal pressures (report.py).
+# Usage: benchmarks/contact/hertz/run.sh [NP]   (default 2 ranks)
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/../../../scripts/env.sh"
+np=${1:-2}
+exe="$build_dir/ductile-contact"
+[[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
+mkdir -p "$here/runs/meshes"
+for ratio in 2 4 8; do
+  mesh="$here/runs/meshes/hertz_h$ratio.msh"
+  [[ -f "$mesh" ]] || /usr/bin/python3 "$here/../../../prm/meshes/make_hertz.py" 1 0.01 "$ratio" 0.3 "$mesh" > /dev/null
+  for basis in dual standard; do
+    dir="$here/runs/h$ratio-$basis"
+    if [[ -f "$dir/statistics" ]]; then echo "== h = a/$ratio, $basis (done)"; continue; fi
+    mkdir -p "$dir"
+    sed -e "s|@MESH@|$mesh|" -e "s|@DIR@|$dir|" -e "s|@BASIS@|$basis|" \
+      "$here/scene.prm.in" > "$dir/scene.prm"
+    echo "== h = a/$ratio, $basis"
+    mpirun -np "$np" "$exe" "$dir/scene.prm" > "$dir/screen.txt" 2>&1 ||
+      echo "   failed, see $dir/screen.txt"
+    rm -f "$dir"/*.vtu "$dir"/*.pvtu
+  done
+done
+/usr/bin/python3 "$here/report.py" "$here"

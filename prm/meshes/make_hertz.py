@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+"""Writes the Hertz line-contact test (validation.md rung 11, contact.md) as
+a Gmsh 2.2 ASCII hexahedral mesh: a cylindrical indenter of radius R on a
+flat foundation, plane strain as a slab of one element layer (thickness =
+the element size h at the contact), half model x >= 0 (symmetry plane
+x = 0). All lengths in metres.
+
+Foundation (volume 1): [0, W] x [-H, 0]. Indenter (volume 2): x in [0, W],
+from its surface y = R - sqrt(R^2 - x^2) up to y = H (it touches the
+foundation at the origin). Elements are h wide for x <= 3 a and |y| <= 2 a
+(a: the expected contact half-width), then grow geometrically (ratio
+<= 1.25) to the outer faces. The indenter's nodes are placed along
+vertical lines, the surface nodes exactly on the circle.
+
+Physical tags: surfaces 1 foundation bottom y = -H, 2 indenter top y = H,
+3 foundation top y = 0 (master), 4 indenter surface (slave), 5 the faces
+x = 0 of both bodies, 6 the slab faces z = 0 and z = h, 7 the faces x = W.
+
+Usage: make_hertz.py R A H_OVER_A W OUTPUT.msh
+       (e.g. make_hertz.py 1 0.01 8 0.3 hertz.msh: h = a/8)
+"""
+import math
+import sys
+
+R = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0
+a = float(sys.argv[2]) if len(sys.argv) > 2 else 0.01
+ratio = float(sys.argv[3]) if len(sys.argv) > 3 else 8
+W = float(sys.argv[4]) if len(sys.argv) > 4 else 0.3
+out = sys.argv[5] if len(sys.argv) > 5 else "hertz.msh"
+h = a / ratio
+H = W
+
+
+def graded(length_fine, total):
+    """Offsets 0 .. total: spacing h up to length_fine, then growing by
+    1.25 per element (the last ones stretched to end at total)."""
+    n = max(1, round(length_fine / h))
+    pts = [length_fine * i / n for i in range(n + 1)]
+    size = h
+    tail = []
+    while pts[-1] + sum(tail) + size * 1.25 < total - 1e-12:
+        size *= 1.25
+        tail.append(size)
+    scale = (total - pts[-1]) / sum(tail) if tail else 1.0
+    for s in tail:
+        pts.append(pts[-1] + s * scale)
+    pts[-1] = total
+    return pts
+
+
+xs = graded(3 * a, W)
+ds = graded(2 * a, H)  # depth below / height above the contact point
+zs = [0.0, h]
+nodes, elements = [], []
+
+
+def body(levels, volume, bottom_tag, top_tag):
+    first = len(nodes) + 1
+    nx, ny = len(xs), len(levels)
+
+    def nid(i, j, k):
+        return first + i + nx * (j + ny * k)
+
+    for k in range(2):
+        for j in range(ny):
+            for i in range(nx):
+                nodes.append((xs[i], levels[j](xs[i]), zs[k]))
+    for j in range(ny - 1):
+        for i in range(nx - 1):
+            v = [nid(i, j, 0), nid(i + 1, j, 0), nid(i + 1, j + 1, 0), nid(i, j + 1, 0),
+                 nid(i, j, 1), nid(i + 1, j, 1), nid(i + 1, j + 1, 1), nid(i, j + 1, 1)]
+            elements.append((5, volume, v))
+            elements.append((3, 6, v[:4]))
+            elements.append((3, 6, v[4:]))
+            if j == 0:
+                elements.append((3, bottom_tag, [v[0], v[1], v[5], v[4]]))
+            if j == ny - 2:
+                elements.append((3, top_tag, [v[3], v[2], v[6], v[7]]))
+            if i == 0:
+                elements.append((3, 5, [v[0], v[3], v[7], v[4]]))
+            if i == nx - 2:
+                elements.append((3, 7, [v[1], v[2], v[6], v[5]]))
+
+
+# Foundation: levels from y = -H up to 0.
+body([(lambda x, d=d: -d) for d in reversed(ds)], 1, 1, 3)
+
+
+# Indenter: from the circle up to H along vertical lines.
+def surface(x):
+    return R - math.sqrt(R * R - x * x)
+
+
+body([(lambda x, d=d: surface(x) + d * (1 - surface(x) / H)) for d in ds], 2, 4, 2)
+
+with open(out, "w") as f:
+    f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
+    f.write("$PhysicalNames\n9\n2 1 \"foundation bottom\"\n2 2 \"indenter top\"\n"
+            "2 3 \"foundation top\"\n2 4 \"indenter surface\"\n2 5 \"symmetry\"\n"
+            "2 6 \"slab faces\"\n2 7 \"outer\"\n3 1 \"foundation\"\n3 2 \"indenter\"\n"
+            "$EndPhysicalNames\n")
+    f.write(f"$Nodes\n{len(nodes)}\n")
+    for i, (x, y, z) in enumerate(nodes, start=1):
+        f.write(f"{i} {x:.17g} {y:.17g} {z:.17g}\n")
+    f.write("$EndNodes\n")
+    f.write(f"$Elements\n{len(elements)}\n")
+    for e, (etype, tag, v) in enumerate(elements, start=1):
+        f.write(f"{e} {etype} 2 {tag} {tag} " + " ".join(map(str, v)) + "\n")
+    f.write("$EndElements\n")
+print(f"{out}: {len(xs) - 1} x {2 * (len(ds) - 1)} hexahedra (h = {h:g} m, "
+      f"R = {R}, a = {a}, W = H = {W})")
