@@ -39,7 +39,7 @@ subsection Body 1)" +
 subsection Body 2)" +
            material + R"(end
 subsection Boundary conditions
-  set Boundary ids = 1, 2, 5, 6
+  set Boundary ids = 1, 2, 5, 6, 8, 9
 end
 subsection Boundary 1
   set Constrained components = z
@@ -51,6 +51,12 @@ subsection Boundary 5
   set Constrained components = x
 end
 subsection Boundary 6
+  set Constrained components = y
+end
+subsection Boundary 8
+  set Constrained components = x
+end
+subsection Boundary 9
   set Constrained components = y
 end
 subsection Contact

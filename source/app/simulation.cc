@@ -282,9 +282,14 @@ namespace DuctileContact
         statistics.add("max_s", max_phase_field);
         statistics.add("min_s_change", min_phase_field_change);
       }
+    double contact_dissipation = 0.;
+    if (contact)
+      for (const ContactPairSummary &c : contact->summary())
+        contact_dissipation += c.dissipation;
     statistics.add("energy_residual",
                    external_work - stored_energy - plastic_work -
-                     committed.fracture_energy - fracture_viscous_work);
+                     committed.fracture_energy - fracture_viscous_work -
+                     contact_dissipation);
     if (contact)
       {
         const auto &pairs = parameters.contact_pairs;
@@ -300,6 +305,11 @@ namespace DuctileContact
             statistics.add(name + "_max_penetration", c.max_penetration);
             statistics.add(name + "_max_pressure", c.max_pressure);
             statistics.add(name + "_min_pressure", c.min_pressure);
+            for (unsigned int d = 0; d < dim; ++d)
+              statistics.add(name + "_friction_" + xyz[d], c.friction_force[d]);
+            statistics.add(name + "_sticking_nodes", c.sticking_nodes);
+            statistics.add(name + "_slipping_nodes", c.slipping_nodes);
+            statistics.add(name + "_dissipation", c.dissipation);
           }
         statistics.add("contact_augmentations", report.augmentations);
       }

@@ -28,9 +28,15 @@ namespace DuctileContact
                       Patterns::Integer(0, 254));
     prm.add_parameter("Friction coefficient",
                       friction_coefficient,
-                      "Coulomb coefficient mu_c [-]. Only frictionless "
-                      "contact (0) is implemented so far.",
+                      "Coulomb coefficient mu_c [-] (0: frictionless).",
                       Patterns::Double(0.));
+    prm.add_parameter("Tangential penalty factor",
+                      tangential_penalty_factor,
+                      "Tangential (stick) penalty of the regularised Coulomb "
+                      "law, eps_T = factor x E / h with E and h as for the "
+                      "normal penalty [-]: a sticking node slips elastically "
+                      "by t_T / eps_T.",
+                      Patterns::Double(1e-6));
     prm.add_parameter("Penalty factor",
                       penalty_factor,
                       "Normal penalty of the augmented Lagrangian, eps_N = "
@@ -80,10 +86,6 @@ namespace DuctileContact
                 s + "Master boundary id",
                 std::to_string(master_boundary_id),
                 "a boundary id different from the slave boundary id");
-    check_input(friction_coefficient == 0.,
-                s + "Friction coefficient",
-                std::to_string(friction_coefficient),
-                "0 (Coulomb friction is not implemented yet, issue #5)");
     check_input(penetration_tolerance > 0.,
                 s + "Penetration tolerance",
                 std::to_string(penetration_tolerance),

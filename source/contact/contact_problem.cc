@@ -111,16 +111,18 @@ namespace DuctileContact
         // eps_N = factor E / h for the slave body.
         const auto body = bodies.find(pair.slave.faces[0].material_id);
         Assert(body != bodies.end(), ExcInternalError());
-        const double mu    = body->second->shear_modulus;
-        const double kappa = body->second->bulk_modulus;
-        const double E     = 9. * kappa * mu / (3. * kappa + mu);
-        const double h     = pair.slave.smallest_face_size();
-        pair.penalty       = prm.penalty_factor * E / h;
-        pair.face_size     = h;
-        pair.tolerance     = prm.penetration_tolerance * h;
-        pair.search_radius = prm.search_radius > 0.
-                               ? prm.search_radius
-                               : std::max(pair.slave.largest_face_size(),
+        const double mu         = body->second->shear_modulus;
+        const double kappa      = body->second->bulk_modulus;
+        const double E          = 9. * kappa * mu / (3. * kappa + mu);
+        const double h          = pair.slave.smallest_face_size();
+        pair.penalty            = prm.penalty_factor * E / h;
+        pair.friction           = prm.friction_coefficient;
+        pair.tangential_penalty = prm.tangential_penalty_factor * E / h;
+        pair.face_size          = h;
+        pair.tolerance          = prm.penetration_tolerance * h;
+        pair.search_radius      = prm.search_radius > 0.
+                                    ? prm.search_radius
+                                    : std::max(pair.slave.largest_face_size(),
                                           pair.master.largest_face_size());
         pair.candidates.assign(pair.slave.faces.size(), {});
         for (const ContactSurface *side : {&pair.slave, &pair.master})
@@ -128,6 +130,12 @@ namespace DuctileContact
             for (const auto d : node.dofs)
               surface.add_index(d);
         pair.multiplier.assign(pair.slave.nodes.size(), 0.);
+        for (const auto &node : pair.slave.nodes)
+          pair.slave_committed.push_back(node.reference);
+        for (const auto &node : pair.master.nodes)
+          pair.master_committed.push_back(node.reference);
+        pair.committed_traction.assign(pair.slave.nodes.size(),
+                                       Tensor<1, dim>());
         pair.committed_multiplier = pair.multiplier;
       }
     surface.compress();
@@ -396,6 +404,54 @@ namespace DuctileContact
       }
     if (summary.active_nodes == 0)
       summary.min_pressure = 0.;
+
+    // Coulomb friction (48) at the nodes that carry pressure.
+    pair.traction.assign(n, Tensor<1, dim>());
+    pair.trial_traction.assign(n, Tensor<1, dim>());
+    pair.friction_state.assign(n, 0);
+    pair.step_dissipation = 0.;
+    if (pair.friction > 0.)
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          if (!(pair.pressure[j] > 0.))
+            continue;
+          const double         A = pair.area[j];
+          const Tensor<2, dim> T =
+            unit_symmetric_tensor<dim>() -
+            outer_product(pair.normal[j], pair.normal[j]);
+          Tensor<1, dim> du;
+          for (const auto &[k, d] : pair.D[j])
+            du += d * (slave.nodes[k].current - pair.slave_committed[k]);
+          for (const auto &[l, m] : pair.M[j])
+            du -= m * (master.nodes[l].current - pair.master_committed[l]);
+          // Slip increment of the slave relative to the master [m].
+          const Tensor<1, dim> slip = T * du / A;
+          // Accepted traction, rotated into the current tangent plane.
+          Tensor<1, dim> old = T * pair.committed_traction[j];
+          if (old.norm() > 0.)
+            old *= pair.committed_traction[j].norm() / old.norm();
+          const Tensor<1, dim> trial = old + pair.tangential_penalty * slip;
+          const double         limit = pair.friction * pair.pressure[j];
+          pair.trial_traction[j]     = trial;
+          if (trial.norm() <= limit)
+            {
+              pair.traction[j]       = trial;
+              pair.friction_state[j] = 1;
+              ++summary.sticking_nodes;
+            }
+          else
+            {
+              pair.traction[j]       = limit / trial.norm() * trial;
+              pair.friction_state[j] = 2;
+              ++summary.slipping_nodes;
+            }
+          // (47): the traction times the slip that is not elastic.
+          pair.step_dissipation +=
+            A * pair.traction[j] *
+            (slip - (pair.traction[j] - old) / pair.tangential_penalty);
+          summary.friction_force += A * pair.traction[j];
+        }
+    summary.dissipation = pair.dissipation + pair.step_dissipation;
   }
 
 
@@ -407,7 +463,7 @@ namespace DuctileContact
   {
     AffineConstraints<double> all_constraints;
     extend_constraints(constraints, all_constraints);
-    FullMatrix<double>                   matrix;
+    FullMatrix<double>                   matrix, b, dt;
     Vector<double>                       rhs, f_int;
     std::vector<types::global_dof_index> indices;
     std::vector<double>                  a;
@@ -440,7 +496,8 @@ namespace DuctileContact
                   a.push_back(m * n[c]);
                 }
             const unsigned int size = indices.size();
-            const double       k    = pair.penalty / pair.area[j];
+            const double       A    = pair.area[j];
+            const double       k    = pair.penalty / A;
             matrix.reinit(size, size);
             rhs.reinit(size);
             f_int.reinit(size);
@@ -450,6 +507,59 @@ namespace DuctileContact
                 f_int[r] = -pair.pressure[j] * a[r];
                 for (unsigned int c = 0; c < size; ++c)
                   matrix(r, c) = k * a[r] * a[c];
+              }
+            if (pair.friction_state[j] > 0)
+              {
+                // Friction: R += A_j b_j^T t_j with b_j = ds_j/dx (D, M,
+                // n_j fixed); dt/dx = eps_T b (stick) or mu (t/|t|) dlambda
+                // /dx + mu lambda eps_T / |t_trial| (I - t t/|t|^2) b
+                // (slip, not symmetric).
+                const Tensor<2, dim> T =
+                  unit_symmetric_tensor<dim>() - outer_product(n, n);
+                b.reinit(dim, size);
+                unsigned int col = 0;
+                for (const auto &[k_node, d] : pair.D[j])
+                  for (unsigned int c = 0; c < dim; ++c, ++col)
+                    for (unsigned int i = 0; i < dim; ++i)
+                      b(i, col) = T[i][c] * d / A;
+                for (const auto &[l_node, m] : pair.M[j])
+                  for (unsigned int c = 0; c < dim; ++c, ++col)
+                    for (unsigned int i = 0; i < dim; ++i)
+                      b(i, col) = -T[i][c] * m / A;
+                dt.reinit(dim, size);
+                const Tensor<1, dim> &t = pair.traction[j];
+                if (pair.friction_state[j] == 1)
+                  for (unsigned int i = 0; i < dim; ++i)
+                    for (unsigned int c = 0; c < size; ++c)
+                      dt(i, c) = pair.tangential_penalty * b(i, c);
+                else
+                  {
+                    const Tensor<1, dim> &trial = pair.trial_traction[j];
+                    const Tensor<1, dim>  dir   = trial / trial.norm();
+                    const double scale = pair.friction * pair.pressure[j] *
+                                         pair.tangential_penalty / trial.norm();
+                    for (unsigned int i = 0; i < dim; ++i)
+                      for (unsigned int c = 0; c < size; ++c)
+                        {
+                          double v = -pair.friction * dir[i] * k * a[c];
+                          for (unsigned int m = 0; m < dim; ++m)
+                            v += scale *
+                                 ((i == m ? 1. : 0.) - dir[i] * dir[m]) *
+                                 b(m, c);
+                          dt(i, c) = v;
+                        }
+                  }
+                for (unsigned int r = 0; r < size; ++r)
+                  {
+                    double force = 0;
+                    for (unsigned int i = 0; i < dim; ++i)
+                      force += A * b(i, r) * t[i];
+                    rhs[r] -= force;
+                    f_int[r] += force;
+                    for (unsigned int c = 0; c < size; ++c)
+                      for (unsigned int i = 0; i < dim; ++i)
+                        matrix(r, c) += A * b(i, r) * dt(i, c);
+                  }
               }
             scatter(matrix,
                     rhs,
@@ -489,7 +599,16 @@ namespace DuctileContact
   ContactProblem::commit()
   {
     for (Pair &pair : data)
-      pair.committed_multiplier = pair.pressure;
+      {
+        pair.committed_multiplier = pair.pressure;
+        pair.committed_traction   = pair.traction;
+        pair.dissipation += pair.step_dissipation;
+        pair.step_dissipation = 0.;
+        for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
+          pair.slave_committed[j] = pair.slave.nodes[j].current;
+        for (unsigned int l = 0; l < pair.master.nodes.size(); ++l)
+          pair.master_committed[l] = pair.master.nodes[l].current;
+      }
   }
 
 

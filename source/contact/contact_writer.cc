@@ -86,8 +86,7 @@ namespace DuctileContact
     pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
            "version=\"0.1\">\n<Collection>\n";
     for (const auto &[t, file] : records)
-      pvd << "<DataSet timestep=\"" << t << "\" file=\"" << file
-          << "\"/>\n";
+      pvd << "<DataSet timestep=\"" << t << "\" file=\"" << file << "\"/>\n";
     pvd << "</Collection>\n</VTKFile>\n";
   }
 } // namespace DuctileContact

@@ -10,7 +10,8 @@ edges cross at angles.
 
 Physical tags: volumes 1 (lower), 2 (upper); surfaces 1 bottom z = 0,
 2 top z = 2, 3 lower body's top z = 1 (master), 4 upper body's bottom z = 1
-(slave), 5 the faces x = 0, 6 the faces y = 0, 7 the other side faces.
+(slave), 5 and 6 the lower body's faces x = 0 and y = 0, 8 and 9 the
+upper body's, 7 the other side faces.
 
 Usage: make_contact_patch.py N_LOW N_UP ANGLE OUTPUT.msh
 """
@@ -35,7 +36,7 @@ def swirl(x, y, degrees):
             0.5 + math.sin(a) * dx + math.cos(a) * dy)
 
 
-def block(n, z0, degrees, volume_tag, top_tag, bottom_tag):
+def block(n, z0, degrees, volume_tag, top_tag, bottom_tag, x0_tag, y0_tag):
     nz = 2
     first = len(nodes) + 1
 
@@ -59,22 +60,23 @@ def block(n, z0, degrees, volume_tag, top_tag, bottom_tag):
                 if k == nz - 1:
                     elements.append((3, top_tag, v[4:]))
                 if i == 0:
-                    elements.append((3, 5, [v[0], v[4], v[7], v[3]]))
+                    elements.append((3, x0_tag, [v[0], v[4], v[7], v[3]]))
                 if i == n - 1:
                     elements.append((3, 7, [v[1], v[2], v[6], v[5]]))
                 if j == 0:
-                    elements.append((3, 6, [v[0], v[1], v[5], v[4]]))
+                    elements.append((3, y0_tag, [v[0], v[1], v[5], v[4]]))
                 if j == n - 1:
                     elements.append((3, 7, [v[3], v[7], v[6], v[2]]))
 
 
-block(n_low, 0.0, angle, 1, 3, 1)
-block(n_up, 1.0, -angle, 2, 2, 4)
+block(n_low, 0.0, angle, 1, 3, 1, 5, 6)
+block(n_up, 1.0, -angle, 2, 2, 4, 8, 9)
 
 with open(out, "w") as f:
     f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
-    f.write("$PhysicalNames\n9\n2 1 \"bottom\"\n2 2 \"top\"\n2 3 \"master\"\n"
-            "2 4 \"slave\"\n2 5 \"x0\"\n2 6 \"y0\"\n2 7 \"free\"\n"
+    f.write("$PhysicalNames\n11\n2 1 \"bottom\"\n2 2 \"top\"\n2 3 \"master\"\n"
+            "2 4 \"slave\"\n2 5 \"x0 lower\"\n2 6 \"y0 lower\"\n2 7 \"free\"\n"
+            "2 8 \"x0 upper\"\n2 9 \"y0 upper\"\n"
             "3 1 \"lower\"\n3 2 \"upper\"\n$EndPhysicalNames\n")
     f.write(f"$Nodes\n{len(nodes)}\n")
     for i, (x, y, z) in enumerate(nodes, start=1):

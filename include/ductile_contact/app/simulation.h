@@ -32,7 +32,8 @@ namespace DuctileContact
    * Psi^e, plastic work W_p and hardening energy, fracture energy g_c int
    * gamma, viscous phase-field dissipation D_f), external work (trapezoidal
    * rule, W += 1/2 (f_n + f_n+1) . (u_n+1 - u_n)) and the energy-balance
-   * residual W_ext - Psi^e - W_p - g_c int gamma - D_f, and writes the
+   * residual W_ext - Psi^e - W_p - g_c int gamma - D_f - D_c (D_c the
+   * frictional dissipation (47) of the contact pairs), and writes the
    * statistics table and output.
    * Reaction forces are sums of f_int (condensed with the hanging-node
    * constraints) over the DoFs a boundary constrains.

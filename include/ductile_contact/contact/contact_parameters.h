@@ -16,15 +16,20 @@ namespace DuctileContact
    * Normal contact is enforced by the augmented Lagrangian method on the
    * nodal weighted gaps: lambda_j = max(0, lambdahat_j - eps_N g_j / A_j),
    * Newton for fixed multipliers lambdahat, then lambdahat <- lambda (Uzawa)
-   * until the largest penetration is below the tolerance.
+   * until the largest penetration is below the tolerance. Coulomb friction
+   * (48): trial traction t_n (rotated into the current tangent plane) +
+   * eps_T s_j with the nodal slip increment s_j, return map to mu_c
+   * lambda_j.
    */
   struct ContactPairParameters
   {
     unsigned int               number             = 1;
     dealii::types::boundary_id slave_boundary_id  = 0;
     dealii::types::boundary_id master_boundary_id = 1;
-    /// Coulomb coefficient mu_c (only 0 is implemented so far).
+    /// Coulomb coefficient mu_c.
     double friction_coefficient = 0.;
+    /// eps_T = tangential_penalty_factor * E_slave / h_slave [Pa/m].
+    double tangential_penalty_factor = 1.;
     /// eps_N = penalty_factor * E_slave / h_slave [Pa/m].
     double penalty_factor = 10.;
     /// Broad-phase enlargement of the face boxes [m]; 0: the largest face

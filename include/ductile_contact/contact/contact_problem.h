@@ -35,6 +35,11 @@ namespace DuctileContact
     /// Largest and smallest nodal pressure lambda_j over the active nodes
     /// [Pa].
     double max_pressure = 0., min_pressure = 0.;
+    /// Friction force the slave exerts on the master, sum of A_j t_T,j [N].
+    dealii::Tensor<1, dim> friction_force;
+    unsigned int           sticking_nodes = 0, slipping_nodes = 0;
+    /// Frictional dissipation (47) up to this state [J].
+    double dissipation = 0.;
   };
 
   /**
@@ -138,7 +143,17 @@ namespace DuctileContact
       ContactSurface slave, master;
       double         penalty       = 0.;                 ///< eps_N [Pa/m]
       double         search_radius = 0., tolerance = 0.; ///< [m]
-      double         face_size = 0.; ///< smallest slave face size [m]
+      double         face_size          = 0.; ///< smallest slave face size [m]
+      double         friction           = 0.; ///< mu_c
+      double         tangential_penalty = 0.; ///< eps_T [Pa/m]
+      /// Node positions of the last accepted step (slip increments).
+      std::vector<dealii::Point<dim>> slave_committed, master_committed;
+      /// Tangential traction per slave node: current and accepted [Pa].
+      std::vector<dealii::Tensor<1, dim>> traction, committed_traction;
+      /// Trial traction and slip state (0 none, 1 stick, 2 slip).
+      std::vector<dealii::Tensor<1, dim>> trial_traction;
+      std::vector<unsigned char>          friction_state;
+      double dissipation = 0., step_dissipation = 0.; ///< [J]
       /// Candidate master faces of each slave face.
       std::vector<std::vector<unsigned int>> candidates;
       /// Multipliers per slave node: iterate and committed [Pa].

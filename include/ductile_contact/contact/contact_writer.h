@@ -32,10 +32,10 @@ namespace DuctileContact
    * @p records holds (time, vtu file) of the steps written so far.
    */
   void
-  write_contact_surface(const ContactNodalData                     &data,
-                        const std::string                          &directory,
-                        const std::string                          &name,
-                        const unsigned int                          step,
-                        const double                                time,
+  write_contact_surface(const ContactNodalData                      &data,
+                        const std::string                           &directory,
+                        const std::string                           &name,
+                        const unsigned int                           step,
+                        const double                                 time,
                         std::vector<std::pair<double, std::string>> &records);
 } // namespace DuctileContact
