@@ -333,11 +333,29 @@ namespace DuctileContact
           continue;
         if (dual)
           dual_coefficients = dual_basis(slave_faces[f]);
+        // Exact check first: only candidates whose current box comes within
+        // half a slave face of this face's box can overlap it (an open gap
+        // wider than that is not in contact in any case).
+        const auto slave_box =
+          face_box(slave, f, 0.5 * pair.face_size).get_boundary_points();
         for (const unsigned int c : pair.candidates[f])
           {
-            const Quad9 master_face = master.current_face(c);
-            for (const MortarPoint &q :
-                 mortar_points(slave_faces[f], master_face))
+            const auto master_box =
+              face_box(master, c, 0.).get_boundary_points();
+            bool apart = false;
+            for (unsigned int d = 0; d < dim; ++d)
+              apart = apart || slave_box.first[d] > master_box.second[d] ||
+                      master_box.first[d] > slave_box.second[d];
+            if (apart)
+              continue;
+            const Quad9                    master_face = master.current_face(c);
+            const std::vector<MortarPoint> points =
+              mortar_points(slave_faces[f], master_face);
+            if (points.empty())
+              continue;
+            // This pair's D and M, added to the nodal rows once.
+            std::array<std::array<double, 9>, 9> D_pair{}, M_pair{};
+            for (const MortarPoint &q : points)
               {
                 Quad9::shape(q.slave, ns);
                 Quad9::shape(q.master, nm);
@@ -350,12 +368,21 @@ namespace DuctileContact
                   }
                 for (unsigned int i = 0; i < 9; ++i)
                   {
-                    const unsigned int j  = slave.faces[f].nodes[i];
-                    const double       wj = q.weight * phi[i];
+                    const double wj = q.weight * phi[i];
                     for (unsigned int k = 0; k < 9; ++k)
-                      pair.D[j][slave.faces[f].nodes[k]] += wj * ns[k];
-                    for (unsigned int l = 0; l < 9; ++l)
-                      pair.M[j][master.faces[c].nodes[l]] += wj * nm[l];
+                      {
+                        D_pair[i][k] += wj * ns[k];
+                        M_pair[i][k] += wj * nm[k];
+                      }
+                  }
+              }
+            for (unsigned int i = 0; i < 9; ++i)
+              {
+                const unsigned int j = slave.faces[f].nodes[i];
+                for (unsigned int k = 0; k < 9; ++k)
+                  {
+                    pair.D[j][slave.faces[f].nodes[k]] += D_pair[i][k];
+                    pair.M[j][master.faces[c].nodes[k]] += M_pair[i][k];
                   }
               }
           }

@@ -33,6 +33,8 @@ for d in sorted(glob.glob(os.path.join(here, "runs", "h*-*"))):
     m = re.match(r"h(\d+)-(\w+)$", os.path.basename(d))
     if not m or not os.path.exists(os.path.join(d, "statistics")):
         continue
+    if "Total wallclock" not in open(os.path.join(d, "screen.txt")).read():
+        continue  # still running or failed
     lines = [l for l in open(os.path.join(d, "statistics")).read().split("\n") if l.strip()]
     names = lines[0].split()
     last = dict(zip(names, map(float, lines[-1].split())))

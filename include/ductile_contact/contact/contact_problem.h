@@ -43,12 +43,13 @@ namespace DuctileContact
   };
 
   /**
-   * Frictionless mortar contact between deformable bodies (model.md section
-   * 5, contact.md), one or more pairs of boundary surfaces.
+   * Mortar contact with Coulomb friction between deformable bodies
+   * (model.md section 5, contact.md), one or more pairs of boundary
+   * surfaces.
    *
-   * Discretisation: standard (not dual) multiplier basis Phi_j = N_j on the
-   * slave quad9 faces, segment-based integration (mortar_points()) on the
-   * current geometry of
+   * Discretisation: dual (biorthogonal) multiplier basis Phi_j on the slave
+   * quad9 faces (or the standard Phi_j = N_j), segment-based integration
+   * (mortar_points()) on the current geometry of
    *
    *   D_jk = int Phi_j N_k dA,  M_jl = int Phi_j (N_l o chi) dA,
    *   A_j = sum_k D_jk,  g_j = n_j . (sum_l M_jl x_l - sum_k D_jk x_k),
@@ -66,6 +67,14 @@ namespace DuctileContact
    * converges linearly when the contact zone moves or rotates; in
    * small-sliding, small-rotation contact the neglected terms are of the
    * order of the contact strain).
+   *
+   * Friction (48), per slave node with lambda_j > 0: slip increment s_j =
+   * T_j (sum_k D_jk (x_k - x_k,n) - sum_l M_jl (x_l - x_l,n)) / A_j since
+   * the last accepted step (T_j = I - n_j n_j), trial traction t_n rotated
+   * into the current tangent plane + eps_T s_j, return map to mu_c
+   * lambda_j; residual sum_j A_j (ds_j/dx)^T t_j, tangent with the same
+   * frozen D, M, n_j (not symmetric while slipping); dissipation (47)
+   * sum_j A_j t_j . (s_j - (t_j - t_n)/eps_T).
    *
    * Search: a bounding-box broad phase (boxes enlarged by the search
    * radius) once per load step in begin_step(); the candidates fix the
