@@ -65,7 +65,8 @@ subsection Contact pair 1
            std::to_string(mu) + R"(
 end
 subsection Load stepping
-  set End time  = )" + end_time + R"(
+  set End time  = )" +
+           end_time + R"(
   set Time step = 0.125
 end
 subsection Linear solver
@@ -93,8 +94,7 @@ main(int argc, char **argv)
   {
     const auto        s    = Testing::run_scene(sliding_prm(0.3, "2"), "mu03");
     const std::size_t last = s.at("time").size() - 1;
-    const double      ratio =
-      norm(s, "friction", last) / norm(s, "force", last);
+    const double ratio     = norm(s, "friction", last) / norm(s, "force", last);
     const double balance =
       std::abs(s.at("F2_x")[last] - s.at("contact1_force_x")[last] -
                s.at("contact1_friction_x")[last]) /
@@ -104,15 +104,14 @@ main(int argc, char **argv)
     const std::size_t first = last - 4;
     const double      dW =
       s.at("external_work")[last] - s.at("external_work")[first];
-    const double dD = s.at("contact1_dissipation")[last] -
-                      s.at("contact1_dissipation")[first];
+    const double dD =
+      s.at("contact1_dissipation")[last] - s.at("contact1_dissipation")[first];
     const double dR =
       s.at("energy_residual")[last] - s.at("energy_residual")[first];
     std::cout << "mu 0.3: |F_T|/|F_N| " << ratio << ", balance " << balance
               << ", dW " << dW << ", dD " << dD << ", d residual " << dR
-              << ", slipping "
-              << s.at("contact1_slipping_nodes")[last] << " of "
-              << s.at("contact1_active_nodes")[last] << std::endl;
+              << ", slipping " << s.at("contact1_slipping_nodes")[last]
+              << " of " << s.at("contact1_active_nodes")[last] << std::endl;
     out << "mu_c = 0.3, full sliding: every node in contact slips: "
         << Testing::yes_no(s.at("contact1_slipping_nodes")[last] ==
                              s.at("contact1_active_nodes")[last] &&
@@ -138,20 +137,19 @@ main(int argc, char **argv)
               << norm(s, "force", last) << std::endl;
     out << "mu_c = 0: no friction force; the top's reaction along x is the "
            "x-part of the normal force (1e-6 |F_N|): "
-        << Testing::yes_no(norm(s, "friction", last) == 0. &&
-                           std::abs(s.at("F2_x")[last] -
-                                    s.at("contact1_force_x")[last]) <
-                             1e-6 * norm(s, "force", last))
+        << Testing::yes_no(
+             norm(s, "friction", last) == 0. &&
+             std::abs(s.at("F2_x")[last] - s.at("contact1_force_x")[last]) <
+               1e-6 * norm(s, "force", last))
         << std::endl;
   }
   {
-    const auto        s    = Testing::run_scene(sliding_prm(10., "1.25"), "mu10");
+    const auto        s = Testing::run_scene(sliding_prm(10., "1.25"), "mu10");
     const std::size_t last = s.at("time").size() - 1;
     out << "mu_c = 10: every node sticks, nothing dissipated: "
         << Testing::yes_no(s.at("contact1_sticking_nodes")[last] ==
                              s.at("contact1_active_nodes")[last] &&
-                           std::abs(s.at("contact1_dissipation")[last]) <
-                             1e-9)
+                           std::abs(s.at("contact1_dissipation")[last]) < 1e-9)
         << std::endl;
     std::cout << "mu 10: sticking " << s.at("contact1_sticking_nodes")[last]
               << " of " << s.at("contact1_active_nodes")[last]

@@ -138,10 +138,10 @@ main(int argc, char **argv)
 
   const Result fine = run(4);
   out << "h = a/4: a within 8 % of Hertz: "
-      << Testing::yes_no(fine.a_error < 0.08) << " (" << std::setprecision(2)
+      << Testing::yes_no(fine.a_error < 0.08) << " (" << std::setprecision(1)
       << 100 * fine.a_error << " %)" << std::endl
       << "h = a/4: p0 within 5 % of Hertz: "
-      << Testing::yes_no(fine.p0_error < 0.05) << " (" << std::setprecision(2)
+      << Testing::yes_no(fine.p0_error < 0.05) << " (" << std::setprecision(1)
       << 100 * fine.p0_error << " %)" << std::endl
       << "contact force balances the reaction (1e-6, Newton tolerance): "
       << Testing::yes_no(fine.balance < 1e-6) << std::endl
