@@ -26,24 +26,14 @@ namespace
   std::string
   sliding_prm(const double mu, const std::string &end_time)
   {
-    return R"(
-subsection Mesh
-  set Scene = gmsh
-  subsection Gmsh
-    set File name = )" SOURCE_DIR R"(/meshes/contact_patch.msh
-  end
-end
-subsection Bodies
-  set Material ids = 1, 2
-end
-subsection Body 1
-  set Shear modulus = 1e9
-  set Bulk modulus  = 2e9
-end
-subsection Body 2
-  set Shear modulus = 1e9
-  set Bulk modulus  = 2e9
-end
+    return Testing::two_body_contact_prm("contact_patch.msh",
+                                         "1e9",
+                                         "2e9",
+                                         4,
+                                         3,
+                                         "  set Friction coefficient = " +
+                                           std::to_string(mu) + "\n") +
+           R"(
 subsection Boundary conditions
   set Boundary ids = 1, 2
 end
@@ -54,15 +44,6 @@ subsection Boundary 2
   set Constrained components = x, y
   set Displacement           = 1e-2*max(t-1,0); 0; 0
   set Traction               = 0; 0; -1e6*min(t,1)
-end
-subsection Contact
-  set Pairs = 1
-end
-subsection Contact pair 1
-  set Slave boundary id    = 4
-  set Master boundary id   = 3
-  set Friction coefficient = )" +
-           std::to_string(mu) + R"(
 end
 subsection Load stepping
   set End time  = )" +

@@ -24,25 +24,13 @@ namespace
   std::string
   hertz_prm(const unsigned int ratio)
   {
-    return R"(
-subsection Mesh
-  set Scene = gmsh
-  subsection Gmsh
-    set File name = )" SOURCE_DIR R"(/meshes/hertz_h)" +
-           std::to_string(ratio) + R"(.msh
-  end
-end
-subsection Bodies
-  set Material ids = 1, 2
-end
-subsection Body 1
-  set Shear modulus = 3.846153846153846e8
-  set Bulk modulus  = 8.333333333333334e8
-end
-subsection Body 2
-  set Shear modulus = 3.846153846153846e8
-  set Bulk modulus  = 8.333333333333334e8
-end
+    return Testing::two_body_contact_prm("hertz_h" + std::to_string(ratio) +
+                                           ".msh",
+                                         "3.846153846153846e8",
+                                         "8.333333333333334e8",
+                                         4,
+                                         3) +
+           R"(
 subsection Boundary conditions
   set Boundary ids = 1, 2, 5, 6
 end
@@ -58,13 +46,6 @@ subsection Boundary 5
 end
 subsection Boundary 6
   set Constrained components = z
-end
-subsection Contact
-  set Pairs = 1
-end
-subsection Contact pair 1
-  set Slave boundary id  = 4
-  set Master boundary id = 3
 end
 subsection Load stepping
   set End time  = 1

@@ -23,21 +23,9 @@ namespace
   std::string
   patch_prm(const unsigned int slave, const unsigned int master)
   {
-    return R"(
-subsection Mesh
-  set Scene = gmsh
-  subsection Gmsh
-    set File name = )" SOURCE_DIR R"(/meshes/contact_patch.msh
-  end
-end
-subsection Bodies
-  set Material ids = 1, 2
-end
-subsection Body 1)" +
-           material +
-           R"(end
-subsection Body 2)" +
-           material + R"(end
+    return Testing::two_body_contact_prm(
+             "contact_patch.msh", "1e9", "2e9", slave, master) +
+           R"(
 subsection Boundary conditions
   set Boundary ids = 1, 2, 5, 6, 8, 9
 end
@@ -58,15 +46,6 @@ subsection Boundary 8
 end
 subsection Boundary 9
   set Constrained components = y
-end
-subsection Contact
-  set Pairs = 1
-end
-subsection Contact pair 1
-  set Slave boundary id  = )" +
-           std::to_string(slave) + R"(
-  set Master boundary id = )" +
-           std::to_string(master) + R"(
 end
 subsection Load stepping
   set End time  = 1

@@ -101,6 +101,45 @@ subsection Body 0
   }
 
   /**
+   * .prm text of a contact scene on the Gmsh mesh tests/meshes/@p mesh:
+   * bodies 1 and 2 of the same neo-Hooke material (@p shear_modulus,
+   * @p bulk_modulus [Pa]) and contact pair 1 from boundary @p slave to
+   * @p master; @p pair_entries adds entries to the pair's subsection.
+   */
+  inline std::string
+  two_body_contact_prm(const std::string &mesh,
+                       const std::string &shear_modulus,
+                       const std::string &bulk_modulus,
+                       const unsigned int slave,
+                       const unsigned int master,
+                       const std::string &pair_entries = "")
+  {
+    const std::string material = "\n  set Shear modulus = " + shear_modulus +
+                                 "\n  set Bulk modulus  = " + bulk_modulus +
+                                 "\nend\n";
+    return R"(
+subsection Mesh
+  set Scene = gmsh
+  subsection Gmsh
+    set File name = )" SOURCE_DIR R"(/meshes/)" +
+           mesh + R"(
+  end
+end
+subsection Bodies
+  set Material ids = 1, 2
+end
+subsection Body 1)" +
+           material + "subsection Body 2" + material + R"(subsection Contact
+  set Pairs = 1
+end
+subsection Contact pair 1
+  set Slave boundary id  = )" +
+           std::to_string(slave) +
+           "\n  set Master boundary id = " + std::to_string(master) + "\n" +
+           pair_entries + "end\n";
+  }
+
+  /**
    * .prm text of uniaxial tension of the unit cube: symmetry planes x = 0
    * (id 0), y = 0 (id 2), z = 0 (id 4); the face x = 1 (id 1) moved along x
    * by @p displacement (an expression in t), free laterally.
