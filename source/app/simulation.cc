@@ -317,6 +317,8 @@ namespace DuctileContact
     if (cracking)
       statistics.add("staggered_iterations", report.staggered_iterations);
     statistics.add("newton_rate", report.convergence_rate);
+    if (parameters.newton.check_tangent)
+      statistics.add("tangent_error", report.tangent_error);
     statistics.add("linear_iterations", report.linear_iterations);
     statistics.add("cutbacks", cutbacks);
     // Cumulative wall time of the phases, for work-precision studies.

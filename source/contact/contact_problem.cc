@@ -7,13 +7,14 @@
 
 #include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/contact/contact_writer.h>
-#include <ductile_contact/contact/mortar_segments.h>
+#include <ductile_contact/contact/mortar_operators.h>
 #include <ductile_contact/core/input_error.h>
 #include <ductile_contact/solver/scatter.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <memory>
 #include <set>
 
 namespace DuctileContact
@@ -22,43 +23,6 @@ namespace DuctileContact
 
   namespace
   {
-    /**
-     * Coefficients a_ik of the dual (biorthogonal) basis Phi_i = sum_k a_ik
-     * N_k of a quad9 face (Wohlmuth 2000): int Phi_i N_k dA = delta_ik int
-     * N_k dA over the face, i.e. A = D_e M_e^-1 with the face's mass matrix
-     * M_e and D_e = diag(int N_i dA) (positive for quad9, so no basis
-     * transformation is needed). sum_i Phi_i = 1, so uniform pressures
-     * are still represented exactly.
-     */
-    FullMatrix<double>
-    dual_basis(const Quad9 &face)
-    {
-      const QGauss<2>       gauss(4);
-      FullMatrix<double>    mass(9, 9), coefficients(9, 9);
-      Vector<double>        lumped(9);
-      std::array<double, 9> n;
-      for (unsigned int q = 0; q < gauss.size(); ++q)
-        {
-          const auto   t = face.tangents(gauss.point(q));
-          const double dA =
-            cross_product_3d(t[0], t[1]).norm() * gauss.weight(q);
-          Quad9::shape(gauss.point(q), n);
-          for (unsigned int i = 0; i < 9; ++i)
-            {
-              lumped[i] += n[i] * dA;
-              for (unsigned int k = 0; k < 9; ++k)
-                mass(i, k) += n[i] * n[k] * dA;
-            }
-        }
-      mass.gauss_jordan();
-      for (unsigned int i = 0; i < 9; ++i)
-        for (unsigned int k = 0; k < 9; ++k)
-          coefficients(i, k) = lumped[i] * mass(i, k);
-      return coefficients;
-    }
-
-
-
     BoundingBox<dim>
     face_box(const ContactSurface &surface, const unsigned int f, double r)
     {
@@ -111,18 +75,24 @@ namespace DuctileContact
         // eps_N = factor E / h for the slave body.
         const auto body = bodies.find(pair.slave.faces[0].material_id);
         Assert(body != bodies.end(), ExcInternalError());
-        const double mu         = body->second->shear_modulus;
-        const double kappa      = body->second->bulk_modulus;
-        const double E          = 9. * kappa * mu / (3. * kappa + mu);
-        const double h          = pair.slave.smallest_face_size();
-        pair.penalty            = prm.penalty_factor * E / h;
-        pair.friction           = prm.friction_coefficient;
-        pair.tangential_penalty = prm.tangential_penalty_factor * E / h;
-        pair.face_size          = h;
-        pair.tolerance          = prm.penetration_tolerance * h;
-        pair.search_radius      = prm.search_radius > 0.
-                                    ? prm.search_radius
-                                    : std::max(pair.slave.largest_face_size(),
+        const double mu             = body->second->shear_modulus;
+        const double kappa          = body->second->bulk_modulus;
+        const double E              = 9. * kappa * mu / (3. * kappa + mu);
+        const double h              = pair.slave.smallest_face_size();
+        pair.index                  = p;
+        pair.dual                   = prm.multiplier_basis == "dual";
+        pair.law.penalty            = prm.penalty_factor * E / h;
+        pair.law.friction           = prm.friction_coefficient;
+        pair.law.tangential_penalty = prm.tangential_penalty_factor * E / h;
+        // Active also when just touching (a gap at round-off level): then
+        // the tangent holds the contact stiffness of a closed interface, so
+        // that bodies which only touch at the start are not free.
+        pair.law.activation_threshold = 1e-12 * pair.law.penalty * h;
+        pair.face_size                = h;
+        pair.tolerance                = prm.penetration_tolerance * h;
+        pair.search_radius            = prm.search_radius > 0.
+                                          ? prm.search_radius
+                                          : std::max(pair.slave.largest_face_size(),
                                           pair.master.largest_face_size());
         pair.candidates.assign(pair.slave.faces.size(), {});
         for (const ContactSurface *side : {&pair.slave, &pair.master})
@@ -305,34 +275,34 @@ namespace DuctileContact
     const unsigned int    n = slave.nodes.size();
     pair.D.assign(n, {});
     pair.M.assign(n, {});
-    pair.normal.assign(n, Tensor<1, dim>());
-    pair.area.assign(n, 0.);
-    pair.gap.assign(n, 0.);
-    pair.pressure.assign(n, 0.);
-    pair.active.assign(n, false);
+    pair.aggregates.assign(n, NodalAggregates());
+    pair.normal_length.assign(n, 0.);
+    pair.nodal.assign(n, NodalContactState());
+    pair.overlaps.clear();
 
     // Averaged nodal normals of the slave surface.
-    std::vector<Quad9> slave_faces(slave.faces.size());
+    pair.slave_faces.resize(slave.faces.size());
+    std::vector<Tensor<1, dim>> normal_sum(n);
     for (unsigned int f = 0; f < slave.faces.size(); ++f)
       {
-        slave_faces[f] = slave.current_face(f);
+        pair.slave_faces[f] = slave.current_face(f);
         for (unsigned int i = 0; i < 9; ++i)
-          pair.normal[slave.faces[f].nodes[i]] +=
-            slave_faces[f].normal(Quad9::node_parameter(i));
+          normal_sum[slave.faces[f].nodes[i]] +=
+            pair.slave_faces[f].normal(Quad9::node_parameter(i));
       }
-    for (auto &normal : pair.normal)
-      normal /= normal.norm();
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        pair.normal_length[j]     = normal_sum[j].norm();
+        pair.aggregates[j].normal = normal_sum[j] / pair.normal_length[j];
+      }
 
-    // Segment-based D and M with the multiplier basis Phi of each face.
-    const bool dual = pairs[&pair - data.data()].multiplier_basis == "dual";
-    std::array<double, 9> ns, nm, phi;
-    FullMatrix<double>    dual_coefficients;
+    // Segment-based D and M of every overlapping face pair.
+    const auto operators = std::make_unique<FacePairOperators>();
     for (unsigned int f = 0; f < slave.faces.size(); ++f)
       {
         if (pair.candidates[f].empty())
           continue;
-        if (dual)
-          dual_coefficients = dual_basis(slave_faces[f]);
+        const MortarFace face(pair.slave_faces[f], pair.dual);
         // Exact check first: only candidates whose current box comes within
         // half a slave face of this face's box can overlap it (an open gap
         // wider than that is not in contact in any case).
@@ -346,139 +316,161 @@ namespace DuctileContact
             for (unsigned int d = 0; d < dim; ++d)
               apart = apart || slave_box.first[d] > master_box.second[d] ||
                       master_box.first[d] > slave_box.second[d];
-            if (apart)
+            if (apart ||
+                !face.integrate(master.current_face(c), *operators, false))
               continue;
-            const Quad9                    master_face = master.current_face(c);
-            const std::vector<MortarPoint> points =
-              mortar_points(slave_faces[f], master_face);
-            if (points.empty())
-              continue;
-            // This pair's D and M, added to the nodal rows once.
-            std::array<std::array<double, 9>, 9> D_pair{}, M_pair{};
-            for (const MortarPoint &q : points)
-              {
-                Quad9::shape(q.slave, ns);
-                Quad9::shape(q.master, nm);
-                for (unsigned int i = 0; i < 9; ++i)
-                  {
-                    phi[i] = dual ? 0. : ns[i];
-                    if (dual)
-                      for (unsigned int k = 0; k < 9; ++k)
-                        phi[i] += dual_coefficients(i, k) * ns[k];
-                  }
-                for (unsigned int i = 0; i < 9; ++i)
-                  {
-                    const double wj = q.weight * phi[i];
-                    for (unsigned int k = 0; k < 9; ++k)
-                      {
-                        D_pair[i][k] += wj * ns[k];
-                        M_pair[i][k] += wj * nm[k];
-                      }
-                  }
-              }
+            pair.overlaps.emplace_back(f, c);
             for (unsigned int i = 0; i < 9; ++i)
               {
                 const unsigned int j = slave.faces[f].nodes[i];
                 for (unsigned int k = 0; k < 9; ++k)
                   {
-                    pair.D[j][slave.faces[f].nodes[k]] += D_pair[i][k];
-                    pair.M[j][master.faces[c].nodes[k]] += M_pair[i][k];
+                    pair.D[j][slave.faces[f].nodes[k]] += operators->D[i][k];
+                    pair.M[j][master.faces[c].nodes[k]] += operators->M[i][k];
                   }
               }
           }
       }
 
-    // Weighted gaps and multipliers.
-    ContactPairSummary &summary = summaries[&pair - data.data()];
+    // Aggregates and the nodal contact law.
+    ContactPairSummary &summary = summaries[pair.index];
     summary                     = ContactPairSummary();
     summary.min_pressure        = std::numeric_limits<double>::max();
+    pair.step_dissipation       = 0.;
     for (unsigned int j = 0; j < n; ++j)
       {
-        double         A = 0;
-        Tensor<1, dim> x;
+        NodalAggregates &a = pair.aggregates[j];
         for (const auto &[k, d] : pair.D[j])
           {
-            A += d;
-            x -= d * slave.nodes[k].current;
+            a.area += d;
+            a.G -= d * slave.nodes[k].current;
+            a.H += d * (slave.nodes[k].current - pair.slave_committed[k]);
           }
         for (const auto &[l, m] : pair.M[j])
-          x += m * master.nodes[l].current;
-        pair.area[j] = A;
+          {
+            a.G += m * master.nodes[l].current;
+            a.H -= m * (master.nodes[l].current - pair.master_committed[l]);
+          }
         // A node that only touches the overlap at its rim (or not at all)
         // carries no contact.
-        if (!(A > 1e-10 * pair.face_size * pair.face_size))
+        if (!(a.area > 1e-10 * pair.face_size * pair.face_size))
           continue;
-        pair.gap[j] = pair.normal[j] * x;
-        const double trial =
-          pair.multiplier[j] - pair.penalty * pair.gap[j] / A;
-        pair.pressure[j] = std::max(0., trial);
-        // Active also when just touching (a gap at round-off level): then
-        // the tangent holds the contact stiffness of a closed interface, so
-        // that bodies which only touch at the start are not free.
-        pair.active[j] = trial > -1e-12 * pair.penalty * pair.face_size;
+        const NodalContactState &state = pair.nodal[j] = nodal_contact(
+          a, pair.multiplier[j], pair.committed_traction[j], pair.law);
         summary.max_penetration =
-          std::max(summary.max_penetration, -pair.gap[j] / A);
-        if (pair.pressure[j] > 0.)
+          std::max(summary.max_penetration, -state.gap / a.area);
+        if (state.pressure > 0.)
           {
-            summary.force += pair.pressure[j] * A * pair.normal[j];
-            summary.area += A;
+            summary.force += state.pressure * a.area * a.normal;
+            summary.area += a.area;
             ++summary.active_nodes;
             summary.max_pressure =
-              std::max(summary.max_pressure, pair.pressure[j]);
+              std::max(summary.max_pressure, state.pressure);
             summary.min_pressure =
-              std::min(summary.min_pressure, pair.pressure[j]);
+              std::min(summary.min_pressure, state.pressure);
           }
+        if (state.friction_state == 1)
+          ++summary.sticking_nodes;
+        if (state.friction_state == 2)
+          ++summary.slipping_nodes;
+        summary.friction_force += a.area * state.traction;
+        pair.step_dissipation += state.dissipation;
       }
     if (summary.active_nodes == 0)
       summary.min_pressure = 0.;
-
-    // Coulomb friction (48) at the nodes that carry pressure.
-    pair.traction.assign(n, Tensor<1, dim>());
-    pair.trial_traction.assign(n, Tensor<1, dim>());
-    pair.friction_state.assign(n, 0);
-    pair.step_dissipation = 0.;
-    if (pair.friction > 0.)
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          if (!(pair.pressure[j] > 0.))
-            continue;
-          const double         A = pair.area[j];
-          const Tensor<2, dim> T =
-            unit_symmetric_tensor<dim>() -
-            outer_product(pair.normal[j], pair.normal[j]);
-          Tensor<1, dim> du;
-          for (const auto &[k, d] : pair.D[j])
-            du += d * (slave.nodes[k].current - pair.slave_committed[k]);
-          for (const auto &[l, m] : pair.M[j])
-            du -= m * (master.nodes[l].current - pair.master_committed[l]);
-          // Slip increment of the slave relative to the master [m].
-          const Tensor<1, dim> slip = T * du / A;
-          // Accepted traction, rotated into the current tangent plane.
-          Tensor<1, dim> old = T * pair.committed_traction[j];
-          if (old.norm() > 0.)
-            old *= pair.committed_traction[j].norm() / old.norm();
-          const Tensor<1, dim> trial = old + pair.tangential_penalty * slip;
-          const double         limit = pair.friction * pair.pressure[j];
-          pair.trial_traction[j]     = trial;
-          if (trial.norm() <= limit)
-            {
-              pair.traction[j]       = trial;
-              pair.friction_state[j] = 1;
-              ++summary.sticking_nodes;
-            }
-          else
-            {
-              pair.traction[j]       = limit / trial.norm() * trial;
-              pair.friction_state[j] = 2;
-              ++summary.slipping_nodes;
-            }
-          // (47): the traction times the slip that is not elastic.
-          pair.step_dissipation +=
-            A * pair.traction[j] *
-            (slip - (pair.traction[j] - old) / pair.tangential_penalty);
-          summary.friction_force += A * pair.traction[j];
-        }
     summary.dissipation = pair.dissipation + pair.step_dissipation;
+  }
+
+
+
+  void
+  ContactProblem::linearise_operators(
+    const Pair                                                  &pair,
+    const std::vector<bool>                                     &needed,
+    const AffineConstraints<double>                             &constraints,
+    const AssemblyTargets                                       &targets,
+    std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
+    const
+  {
+    const ContactSurface  &slave = pair.slave, &master = pair.master;
+    const unsigned int     ns            = slave.nodes.size();
+    constexpr unsigned int n_coordinates = face_pair_coordinates;
+    const auto             operators = std::make_unique<FacePairOperators>();
+    std::unique_ptr<MortarFace> face;
+    unsigned int                face_index = numbers::invalid_unsigned_int;
+    FullMatrix<double>          matrix(n_coordinates, n_coordinates);
+    Vector<double>              rhs(n_coordinates), f_int(n_coordinates);
+    std::vector<types::global_dof_index>    indices(n_coordinates);
+    std::array<unsigned int, n_coordinates> keys;
+    for (const auto &[f, c] : pair.overlaps)
+      {
+        const auto &s_nodes = slave.faces[f].nodes;
+        const auto &m_nodes = master.faces[c].nodes;
+        if (std::none_of(s_nodes.begin(),
+                         s_nodes.end(),
+                         [&](const unsigned int j) { return needed[j]; }))
+          continue;
+        if (f != face_index)
+          {
+            face = std::make_unique<MortarFace>(pair.slave_faces[f], pair.dual);
+            face_index = f;
+          }
+        face->integrate(master.current_face(c), *operators, true);
+        for (unsigned int a = 0; a < n_coordinates; ++a)
+          {
+            keys[a]    = a < 27 ? 3 * s_nodes[a / 3] + a % 3
+                                : 3 * (ns + m_nodes[(a - 27) / 3]) + a % 3;
+            indices[a] = a < 27
+                           ? slave.nodes[s_nodes[a / 3]].dofs[a % 3]
+                           : master.nodes[m_nodes[(a - 27) / 3]].dofs[a % 3];
+          }
+        matrix = 0.;
+        for (unsigned int i = 0; i < 9; ++i)
+          {
+            const unsigned int j = s_nodes[i];
+            if (!needed[j])
+              continue;
+            const Tensor<1, dim> &force = pair.nodal[j].force_density;
+            auto                 &g     = gradients[j];
+            for (unsigned int a = 0; a < n_coordinates; ++a)
+              {
+                std::array<double, 10> &e = g[keys[a]];
+                for (unsigned int k = 0; k < 9; ++k)
+                  {
+                    const double       d    = operators->dD[i][k][a];
+                    const unsigned int node = s_nodes[k];
+                    e[0] += d;
+                    for (unsigned int r = 0; r < dim; ++r)
+                      {
+                        e[1 + r] -= d * slave.nodes[node].current[r];
+                        e[4 + r] += d * (slave.nodes[node].current[r] -
+                                         pair.slave_committed[node][r]);
+                        matrix(3 * k + r, a) += d * force[r];
+                      }
+                  }
+                for (unsigned int l = 0; l < 9; ++l)
+                  {
+                    const double       m    = operators->dM[i][l][a];
+                    const unsigned int node = m_nodes[l];
+                    for (unsigned int r = 0; r < dim; ++r)
+                      {
+                        e[1 + r] += m * master.nodes[node].current[r];
+                        e[4 + r] -= m * (master.nodes[node].current[r] -
+                                         pair.master_committed[node][r]);
+                        matrix(27 + 3 * l + r, a) -= m * force[r];
+                      }
+                  }
+              }
+          }
+        rhs = 0.;
+        scatter(matrix,
+                rhs,
+                f_int,
+                indices,
+                constraints,
+                discretisation.hanging_node_constraints,
+                targets);
+      }
   }
 
 
@@ -490,104 +482,132 @@ namespace DuctileContact
   {
     AffineConstraints<double> all_constraints;
     extend_constraints(constraints, all_constraints);
-    FullMatrix<double>                   matrix, b, dt;
+    FullMatrix<double>                   matrix;
     Vector<double>                       rhs, f_int;
     std::vector<types::global_dof_index> indices;
-    std::vector<double>                  a;
     for (Pair &pair : data)
       {
         pair.slave.update(u, discretisation);
         pair.master.update(u, discretisation);
         integrate(pair);
 
-        for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
+        const ContactSurface &slave = pair.slave, &master = pair.master;
+        const unsigned int    ns = slave.nodes.size();
+        std::vector<bool>     needed(ns);
+        for (unsigned int j = 0; j < ns; ++j)
+          needed[j] = pair.nodal[j].active &&
+                      discretisation.locally_owned_dofs.is_element(
+                        slave.nodes[j].dofs[0]);
+        const auto dof = [&](const unsigned int key) {
+          const unsigned int node = key / 3;
+          return node < ns ? slave.nodes[node].dofs[key % 3]
+                           : master.nodes[node - ns].dofs[key % 3];
+        };
+
+        // d(aggregates)/dx: through D and M ...
+        std::vector<std::map<unsigned int, std::array<double, 10>>> gradients(
+          ns);
+        const bool tangent = targets.tangent != nullptr;
+        if (tangent)
+          linearise_operators(
+            pair, needed, all_constraints, targets, gradients);
+
+        for (unsigned int j = 0; j < ns; ++j)
           {
-            if (!pair.active[j] ||
-                !discretisation.locally_owned_dofs.is_element(
-                  pair.slave.nodes[j].dofs[0]))
+            if (!needed[j])
               continue;
-            // a_j = dg_j/dx with D, M and n_j fixed.
-            const Tensor<1, dim> &n = pair.normal[j];
-            indices.clear();
-            a.clear();
+            const NodalContactState &state = pair.nodal[j];
+            auto                    &g     = gradients[j];
+            if (tangent)
+              {
+                // ... directly (D and M fixed) ...
+                for (const auto &[k, d] : pair.D[j])
+                  for (unsigned int r = 0; r < dim; ++r)
+                    {
+                      auto &e = g[3 * k + r];
+                      e[1 + r] -= d;
+                      e[4 + r] += d;
+                    }
+                for (const auto &[l, m] : pair.M[j])
+                  for (unsigned int r = 0; r < dim; ++r)
+                    {
+                      auto &e = g[3 * (ns + l) + r];
+                      e[1 + r] += m;
+                      e[4 + r] -= m;
+                    }
+                // ... and through the normal n_j = sum_f n_f / |sum_f n_f|:
+                // dn_j = (I - n_j n_j) / |sum_f n_f| sum_f dn_f.
+                const Tensor<1, dim> &n = pair.aggregates[j].normal;
+                const Tensor<2, dim>  P =
+                  (unit_symmetric_tensor<dim>() - outer_product(n, n)) /
+                  pair.normal_length[j];
+                for (const unsigned int f : slave.node_faces[j])
+                  {
+                    const auto &nodes = slave.faces[f].nodes;
+                    const auto  i =
+                      std::find(nodes.begin(), nodes.end(), j) - nodes.begin();
+                    const auto dn = pair.slave_faces[f].normal_derivatives(
+                      Quad9::node_parameter(i));
+                    for (unsigned int r = 0; r < 9; ++r)
+                      {
+                        const Tensor<2, dim> dn_j = P * dn[r];
+                        for (unsigned int m = 0; m < dim; ++m)
+                          {
+                            auto &e = g[3 * nodes[r] + m];
+                            for (unsigned int c = 0; c < dim; ++c)
+                              e[7 + c] += dn_j[c][m];
+                          }
+                      }
+                  }
+              }
+
+            // Local system: rows D_jk f_j (slave k), -M_jl f_j (master l);
+            // columns df_j/dx = (df_j/da) (da/dx).
+            std::map<unsigned int, unsigned int> local;
             for (const auto &[k, d] : pair.D[j])
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  indices.push_back(pair.slave.nodes[k].dofs[c]);
-                  a.push_back(-d * n[c]);
-                }
+              for (unsigned int r = 0; r < dim; ++r)
+                local.emplace(3 * k + r, 0);
             for (const auto &[l, m] : pair.M[j])
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  indices.push_back(pair.master.nodes[l].dofs[c]);
-                  a.push_back(m * n[c]);
-                }
+              for (unsigned int r = 0; r < dim; ++r)
+                local.emplace(3 * (ns + l) + r, 0);
+            for (const auto &entry : g)
+              local.emplace(entry.first, 0);
+            indices.clear();
+            for (auto &[key, position] : local)
+              {
+                position = indices.size();
+                indices.push_back(dof(key));
+              }
             const unsigned int size = indices.size();
-            const double       A    = pair.area[j];
-            const double       k    = pair.penalty / A;
             matrix.reinit(size, size);
             rhs.reinit(size);
             f_int.reinit(size);
+            // df_j/dx per column
+            std::vector<std::pair<unsigned int, Tensor<1, dim>>> df;
+            for (const auto &[key, e] : g)
+              {
+                Tensor<1, dim> v;
+                for (unsigned int r = 0; r < dim; ++r)
+                  for (unsigned int a = 0; a < 10; ++a)
+                    v[r] += state.jacobian[r][a] * e[a];
+                df.emplace_back(local[key], v);
+              }
+            const auto add_row = [&](const unsigned int key,
+                                     const double       weight) {
+              for (unsigned int r = 0; r < dim; ++r)
+                {
+                  const unsigned int row = local[key + r];
+                  f_int[row] += weight * state.force_density[r];
+                  for (const auto &[column, v] : df)
+                    matrix(row, column) += weight * v[r];
+                }
+            };
+            for (const auto &[k, d] : pair.D[j])
+              add_row(3 * k, d);
+            for (const auto &[l, m] : pair.M[j])
+              add_row(3 * (ns + l), -m);
             for (unsigned int r = 0; r < size; ++r)
-              {
-                rhs[r]   = pair.pressure[j] * a[r];
-                f_int[r] = -pair.pressure[j] * a[r];
-                for (unsigned int c = 0; c < size; ++c)
-                  matrix(r, c) = k * a[r] * a[c];
-              }
-            if (pair.friction_state[j] > 0)
-              {
-                // Friction: R += A_j b_j^T t_j with b_j = ds_j/dx (D, M,
-                // n_j fixed); dt/dx = eps_T b (stick) or mu (t/|t|) dlambda
-                // /dx + mu lambda eps_T / |t_trial| (I - t t/|t|^2) b
-                // (slip, not symmetric).
-                const Tensor<2, dim> T =
-                  unit_symmetric_tensor<dim>() - outer_product(n, n);
-                b.reinit(dim, size);
-                unsigned int col = 0;
-                for (const auto &[k_node, d] : pair.D[j])
-                  for (unsigned int c = 0; c < dim; ++c, ++col)
-                    for (unsigned int i = 0; i < dim; ++i)
-                      b(i, col) = T[i][c] * d / A;
-                for (const auto &[l_node, m] : pair.M[j])
-                  for (unsigned int c = 0; c < dim; ++c, ++col)
-                    for (unsigned int i = 0; i < dim; ++i)
-                      b(i, col) = -T[i][c] * m / A;
-                dt.reinit(dim, size);
-                const Tensor<1, dim> &t = pair.traction[j];
-                if (pair.friction_state[j] == 1)
-                  for (unsigned int i = 0; i < dim; ++i)
-                    for (unsigned int c = 0; c < size; ++c)
-                      dt(i, c) = pair.tangential_penalty * b(i, c);
-                else
-                  {
-                    const Tensor<1, dim> &trial = pair.trial_traction[j];
-                    const Tensor<1, dim>  dir   = trial / trial.norm();
-                    const double scale = pair.friction * pair.pressure[j] *
-                                         pair.tangential_penalty / trial.norm();
-                    for (unsigned int i = 0; i < dim; ++i)
-                      for (unsigned int c = 0; c < size; ++c)
-                        {
-                          double v = -pair.friction * dir[i] * k * a[c];
-                          for (unsigned int m = 0; m < dim; ++m)
-                            v += scale *
-                                 ((i == m ? 1. : 0.) - dir[i] * dir[m]) *
-                                 b(m, c);
-                          dt(i, c) = v;
-                        }
-                  }
-                for (unsigned int r = 0; r < size; ++r)
-                  {
-                    double force = 0;
-                    for (unsigned int i = 0; i < dim; ++i)
-                      force += A * b(i, r) * t[i];
-                    rhs[r] -= force;
-                    f_int[r] += force;
-                    for (unsigned int c = 0; c < size; ++c)
-                      for (unsigned int i = 0; i < dim; ++i)
-                        matrix(r, c) += A * b(i, r) * dt(i, c);
-                  }
-              }
+              rhs[r] = -f_int[r];
             scatter(matrix,
                     rhs,
                     f_int,
@@ -614,8 +634,9 @@ namespace DuctileContact
     for (unsigned int p = 0; p < data.size(); ++p)
       if (summaries[p].max_penetration > data[p].tolerance)
         {
-          done               = false;
-          data[p].multiplier = data[p].pressure;
+          done = false;
+          for (unsigned int j = 0; j < data[p].nodal.size(); ++j)
+            data[p].multiplier[j] = data[p].nodal[j].pressure;
         }
     return done;
   }
@@ -627,8 +648,11 @@ namespace DuctileContact
   {
     for (Pair &pair : data)
       {
-        pair.committed_multiplier = pair.pressure;
-        pair.committed_traction   = pair.traction;
+        for (unsigned int j = 0; j < pair.nodal.size(); ++j)
+          {
+            pair.committed_multiplier[j] = pair.nodal[j].pressure;
+            pair.committed_traction[j]   = pair.nodal[j].traction;
+          }
         pair.dissipation += pair.step_dissipation;
         pair.step_dissipation = 0.;
         for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
@@ -652,13 +676,15 @@ namespace DuctileContact
       {
         const Pair      &pair = data[p];
         ContactNodalData nodal;
-        nodal.surface  = &pair.slave;
-        nodal.pressure = pair.pressure;
-        nodal.normal   = pair.normal;
-        nodal.active   = pair.active;
-        nodal.gap.resize(pair.gap.size());
-        for (unsigned int j = 0; j < pair.gap.size(); ++j)
-          nodal.gap[j] = pair.area[j] > 0. ? pair.gap[j] / pair.area[j] : 0.;
+        nodal.surface = &pair.slave;
+        for (unsigned int j = 0; j < pair.nodal.size(); ++j)
+          {
+            const NodalAggregates &a = pair.aggregates[j];
+            nodal.pressure.push_back(pair.nodal[j].pressure);
+            nodal.normal.push_back(a.normal);
+            nodal.active.push_back(pair.nodal[j].active);
+            nodal.gap.push_back(a.area > 0. ? pair.nodal[j].gap / a.area : 0.);
+          }
         // Before the first assembly (step 0) nothing is computed yet.
         const std::size_t n = pair.slave.nodes.size();
         nodal.pressure.resize(n, 0.);

@@ -1,6 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/tensor.h>
 
+#include <ductile_contact/contact/contact_ad.h>
 #include <ductile_contact/contact/mortar_segments.h>
 
 #include <algorithm>
@@ -13,6 +14,44 @@ namespace DuctileContact
 
   namespace
   {
+    template <typename Number>
+    using Vec = std::array<Number, dim>;
+    template <typename Number>
+    using Vec2 = std::array<Number, 2>;
+
+    template <typename Number>
+    Vec<Number>
+    minus(const Vec<Number> &a, const Vec<Number> &b)
+    {
+      return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}};
+    }
+
+    template <typename Number>
+    Number
+    dot(const Vec<Number> &a, const Vec<Number> &b)
+    {
+      return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    template <typename Number>
+    Vec<Number>
+    cross(const Vec<Number> &a, const Vec<Number> &b)
+    {
+      return {{a[1] * b[2] - a[2] * b[1],
+               a[2] * b[0] - a[0] * b[2],
+               a[0] * b[1] - a[1] * b[0]}};
+    }
+
+    template <typename Number>
+    void
+    normalise(Vec<Number> &a)
+    {
+      using std::sqrt;
+      const Number length = sqrt(dot(a, a));
+      for (auto &c : a)
+        c /= length;
+    }
+
     /// Sub-quad (p, q) of a quad9: its four nodes, counter-clockwise in
     /// the parameter plane (so that its normal points outward).
     std::array<unsigned int, 4>
@@ -22,10 +61,72 @@ namespace DuctileContact
     }
 
     /// 2-D cross product of b - a and c - a.
-    double
-    orient(const Point<2> &a, const Point<2> &b, const Point<2> &c)
+    template <typename Number>
+    Number
+    orient(const Vec2<Number> &a, const Vec2<Number> &b, const Vec2<Number> &c)
     {
       return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    }
+
+    template <typename Number>
+    Number
+    area_of(const std::vector<Vec2<Number>> &polygon)
+    {
+      Number a = 0.;
+      for (std::size_t i = 0; i < polygon.size(); ++i)
+        {
+          const Vec2<Number> &p = polygon[i];
+          const Vec2<Number> &q = polygon[(i + 1) % polygon.size()];
+          a += p[0] * q[1] - p[1] * q[0];
+        }
+      return 0.5 * a;
+    }
+
+    /**
+     * Sutherland-Hodgman; inside/outside is decided on the values. A vertex
+     * within @p tolerance (a distance) of a clipping line counts as on it:
+     * it is kept and makes no intersection point, so coincident edges (the
+     * flush sides of a patch test, a slave edge on a master edge) give
+     * neither duplicate vertices nor intersections of nearly parallel
+     * lines, whose position is well defined but whose derivative is not.
+     */
+    template <typename Number>
+    std::vector<Vec2<Number>>
+    clip(const std::vector<Vec2<Number>> &subject,
+         const std::vector<Vec2<Number>> &clipper,
+         const double                     tolerance)
+    {
+      std::vector<Vec2<Number>> output = subject;
+      for (std::size_t e = 0; e < clipper.size() && !output.empty(); ++e)
+        {
+          const Vec2<Number> &a = clipper[e];
+          const Vec2<Number> &b = clipper[(e + 1) % clipper.size()];
+          const double        length =
+            std::hypot(value_of(b[0] - a[0]), value_of(b[1] - a[1]));
+          const double                    eps   = tolerance * length;
+          const std::vector<Vec2<Number>> input = output;
+          output.clear();
+          for (std::size_t i = 0; i < input.size(); ++i)
+            {
+              const Vec2<Number> &p    = input[i];
+              const Vec2<Number> &q    = input[(i + 1) % input.size()];
+              const Number        dp   = orient(a, b, p);
+              const Number        dq   = orient(a, b, q);
+              const bool          p_in = value_of(dp) >= -eps;
+              const bool          q_in = value_of(dq) >= -eps;
+              if (p_in)
+                output.push_back(p);
+              // A crossing from strictly inside to strictly outside (or
+              // back): a new vertex.
+              if (p_in != q_in && std::abs(value_of(p_in ? dp : dq)) > eps)
+                {
+                  const Number s = dp / (dp - dq);
+                  output.push_back(
+                    {{p[0] + s * (q[0] - p[0]), p[1] + s * (q[1] - p[1])}});
+                }
+            }
+        }
+      return output;
     }
 
     /// Collapsed (Duffy) Gauss rule on the triangle: barycentric
@@ -62,26 +163,204 @@ namespace DuctileContact
       return rule;
     }
 
-    Point<2>
-    clamp(const Point<2> &p)
+    template <typename Number>
+    Quad9
+    values_of(const FaceCoordinates<Number> &x)
     {
-      return {std::clamp(p[0], 0., 1.), std::clamp(p[1], 0., 1.)};
+      Quad9 face;
+      for (unsigned int i = 0; i < 9; ++i)
+        for (unsigned int c = 0; c < dim; ++c)
+          face.x[i][c] = value_of(x[i][c]);
+      return face;
+    }
+
+    /**
+     * The parameter point where the line q + t d meets the face x: Newton
+     * on the values (Quad9::project_along), then one Newton correction in
+     * Number, which carries the derivatives dxi = -J^-1 dr (implicit
+     * function theorem, J = [x_xi, x_eta, -d] at the solution). The point
+     * is clamped to the face.
+     */
+    template <typename Number>
+    bool
+    project(const FaceCoordinates<Number> &x,
+            const Quad9                   &face,
+            const Vec<Number>             &q,
+            const Vec<Number>             &d,
+            const Point<2>                &start,
+            Vec2<Number>                  &xi)
+    {
+      Point<dim>     q0;
+      Tensor<1, dim> d0;
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          q0[c] = value_of(q[c]);
+          d0[c] = value_of(d[c]);
+        }
+      Point<2> xi0;
+      if (!face.project_along(q0, d0, start, xi0))
+        return false;
+      const double   t  = (face.position(xi0) - q0) * d0 / d0.norm_square();
+      const auto     tg = face.tangents(xi0);
+      Tensor<2, dim> jac;
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          jac[c][0] = tg[0][c];
+          jac[c][1] = tg[1][c];
+          jac[c][2] = -d0[c];
+        }
+      const Tensor<2, dim>  inverse = invert(jac);
+      std::array<double, 9> n;
+      Quad9::shape(xi0, n);
+      Vec<Number> r;
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          r[c] = -q[c] - t * d[c];
+          for (unsigned int i = 0; i < 9; ++i)
+            r[c] += n[i] * x[i][c];
+        }
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          xi[k] = xi0[k];
+          for (unsigned int c = 0; c < dim; ++c)
+            xi[k] -= inverse[k][c] * r[c];
+          if (value_of(xi[k]) < 0.)
+            xi[k] = 0.;
+          else if (value_of(xi[k]) > 1.)
+            xi[k] = 1.;
+        }
+      return true;
     }
   } // namespace
+
+
+
+  template <typename Number>
+  std::vector<MortarPointOf<Number>>
+  mortar_points(const FaceCoordinates<Number> &slave,
+                const FaceCoordinates<Number> &master)
+  {
+    const Quad9 slave_face = values_of(slave), master_face = values_of(master);
+    std::vector<MortarPointOf<Number>> points;
+    for (unsigned int sq = 0; sq < 4; ++sq)
+      {
+        const auto  s_nodes = sub_quad(sq % 2, sq / 2);
+        Vec<Number> centre{{0., 0., 0.}};
+        for (const unsigned int i : s_nodes)
+          for (unsigned int c = 0; c < dim; ++c)
+            centre[c] += 0.25 * slave[i][c];
+        Vec<Number> n0 = cross(minus(slave[s_nodes[2]], slave[s_nodes[0]]),
+                               minus(slave[s_nodes[3]], slave[s_nodes[1]]));
+        normalise(n0);
+        Vec<Number>  t1    = minus(slave[s_nodes[1]], slave[s_nodes[0]]);
+        const Number t1_n0 = dot(t1, n0);
+        for (unsigned int c = 0; c < dim; ++c)
+          t1[c] -= t1_n0 * n0[c];
+        normalise(t1);
+        const Vec<Number> t2       = cross(n0, t1);
+        const auto        in_plane = [&](const Vec<Number> &p) {
+          const Vec<Number> d = minus(p, centre);
+          return Vec2<Number>{{dot(d, t1), dot(d, t2)}};
+        };
+
+        std::vector<Vec2<Number>> s_polygon;
+        for (const unsigned int i : s_nodes)
+          s_polygon.push_back(in_plane(slave[i]));
+        const double s_area = value_of(area_of(s_polygon));
+        if (!(s_area > 0.))
+          continue; // degenerate (or inverted) slave sub-quad
+        const Point<2> s_start(0.25 * (sq % 2) + 0.25, 0.25 * (sq / 2) + 0.25);
+
+        for (unsigned int mq = 0; mq < 4; ++mq)
+          {
+            const auto        m_nodes = sub_quad(mq % 2, mq / 2);
+            const Vec<Number> n_m =
+              cross(minus(master[m_nodes[2]], master[m_nodes[0]]),
+                    minus(master[m_nodes[3]], master[m_nodes[1]]));
+            if (value_of(dot(n_m, n0)) >= 0.)
+              continue; // the sub-quads do not face each other
+            std::vector<Vec2<Number>> m_polygon;
+            for (const unsigned int i : m_nodes)
+              m_polygon.push_back(in_plane(master[i]));
+            // The master faces the other way: clockwise in this plane.
+            std::reverse(m_polygon.begin(), m_polygon.end());
+            if (!(value_of(area_of(m_polygon)) > 0.))
+              continue;
+            const std::vector<Vec2<Number>> overlap =
+              clip(m_polygon, s_polygon, 1e-10 * std::sqrt(s_area));
+            if (overlap.size() < 3)
+              continue;
+            if (!(value_of(area_of(overlap)) > 1e-12 * s_area))
+              continue;
+
+            Vec2<Number> centroid{{0., 0.}};
+            for (const Vec2<Number> &p : overlap)
+              for (unsigned int c = 0; c < 2; ++c)
+                centroid[c] += p[c] / static_cast<double>(overlap.size());
+            const Point<2> m_start(0.25 * (mq % 2) + 0.25,
+                                   0.25 * (mq / 2) + 0.25);
+            for (std::size_t e = 0; e < overlap.size(); ++e)
+              {
+                const Vec2<Number> &a      = overlap[e];
+                const Vec2<Number> &b      = overlap[(e + 1) % overlap.size()];
+                const Number triangle_area = 0.5 * orient(centroid, a, b);
+                if (!(value_of(triangle_area) > 0.))
+                  continue;
+                for (const TrianglePoint &g : triangle_rule())
+                  {
+                    Vec<Number> q = centre;
+                    for (unsigned int k = 0; k < 2; ++k)
+                      {
+                        const Number p =
+                          g.l0 * centroid[k] + g.l1 * a[k] + g.l2 * b[k];
+                        const Vec<Number> &t = k == 0 ? t1 : t2;
+                        for (unsigned int c = 0; c < dim; ++c)
+                          q[c] += p * t[c];
+                      }
+                    MortarPointOf<Number> point;
+                    if (!project(
+                          slave, slave_face, q, n0, s_start, point.slave) ||
+                        !project(
+                          master, master_face, q, n0, m_start, point.master))
+                      continue;
+                    point.weight = g.w * triangle_area;
+                    points.push_back(point);
+                  }
+              }
+          }
+      }
+    return points;
+  }
+
+
+
+  std::vector<MortarPoint>
+  mortar_points(const Quad9 &slave, const Quad9 &master)
+  {
+    FaceCoordinates<double> s, m;
+    for (unsigned int i = 0; i < 9; ++i)
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          s[i][c] = slave.x[i][c];
+          m[i][c] = master.x[i][c];
+        }
+    std::vector<MortarPoint> points;
+    for (const auto &p : mortar_points<double>(s, m))
+      points.push_back({Point<2>(p.slave[0], p.slave[1]),
+                        Point<2>(p.master[0], p.master[1]),
+                        p.weight});
+    return points;
+  }
 
 
 
   double
   polygon_area(const std::vector<Point<2>> &polygon)
   {
-    double a = 0;
-    for (std::size_t i = 0; i < polygon.size(); ++i)
-      {
-        const Point<2> &p = polygon[i];
-        const Point<2> &q = polygon[(i + 1) % polygon.size()];
-        a += p[0] * q[1] - p[1] * q[0];
-      }
-    return 0.5 * a;
+    std::vector<Vec2<double>> p;
+    for (const auto &v : polygon)
+      p.push_back({{v[0], v[1]}});
+    return area_of(p);
   }
 
 
@@ -90,115 +369,23 @@ namespace DuctileContact
   clip_polygon(const std::vector<Point<2>> &subject,
                const std::vector<Point<2>> &clipper)
   {
-    std::vector<Point<2>> output = subject;
-    for (std::size_t e = 0; e < clipper.size() && !output.empty(); ++e)
-      {
-        const Point<2>             &a     = clipper[e];
-        const Point<2>             &b     = clipper[(e + 1) % clipper.size()];
-        const std::vector<Point<2>> input = output;
-        output.clear();
-        for (std::size_t i = 0; i < input.size(); ++i)
-          {
-            const Point<2> &p    = input[i];
-            const Point<2> &q    = input[(i + 1) % input.size()];
-            const double    dp   = orient(a, b, p);
-            const double    dq   = orient(a, b, q);
-            const bool      p_in = dp >= 0.;
-            const bool      q_in = dq >= 0.;
-            if (p_in)
-              output.push_back(p);
-            if (p_in != q_in)
-              {
-                const double s = dp / (dp - dq);
-                output.push_back(p + s * (q - p));
-              }
-          }
-      }
-    return output;
+    std::vector<Vec2<double>> s, c;
+    for (const auto &v : subject)
+      s.push_back({{v[0], v[1]}});
+    for (const auto &v : clipper)
+      c.push_back({{v[0], v[1]}});
+    std::vector<Point<2>> result;
+    for (const auto &v : clip(s, c, 0.))
+      result.emplace_back(v[0], v[1]);
+    return result;
   }
 
 
 
-  std::vector<MortarPoint>
-  mortar_points(const Quad9 &slave, const Quad9 &master)
-  {
-    std::vector<MortarPoint> points;
-    for (unsigned int sq = 0; sq < 4; ++sq)
-      {
-        const auto s_nodes = sub_quad(sq % 2, sq / 2);
-        Point<dim> centre;
-        for (const unsigned int i : s_nodes)
-          centre += 0.25 * slave.x[i];
-        Tensor<1, dim> n0 =
-          cross_product_3d(slave.x[s_nodes[2]] - slave.x[s_nodes[0]],
-                           slave.x[s_nodes[3]] - slave.x[s_nodes[1]]);
-        n0 /= n0.norm();
-        Tensor<1, dim> t1 = slave.x[s_nodes[1]] - slave.x[s_nodes[0]];
-        t1 -= (t1 * n0) * n0;
-        t1 /= t1.norm();
-        const Tensor<1, dim> t2       = cross_product_3d(n0, t1);
-        const auto           in_plane = [&](const Point<dim> &p) {
-          const Tensor<1, dim> d = p - centre;
-          return Point<2>(d * t1, d * t2);
-        };
-
-        std::vector<Point<2>> s_polygon;
-        for (const unsigned int i : s_nodes)
-          s_polygon.push_back(in_plane(slave.x[i]));
-        const double s_area = polygon_area(s_polygon);
-        if (!(s_area > 0.))
-          continue; // degenerate (or inverted) slave sub-quad
-        const Point<2> s_start(0.25 * (sq % 2) + 0.25, 0.25 * (sq / 2) + 0.25);
-
-        for (unsigned int mq = 0; mq < 4; ++mq)
-          {
-            const auto     m_nodes = sub_quad(mq % 2, mq / 2);
-            Tensor<1, dim> n_m =
-              cross_product_3d(master.x[m_nodes[2]] - master.x[m_nodes[0]],
-                               master.x[m_nodes[3]] - master.x[m_nodes[1]]);
-            if (n_m * n0 >= 0.)
-              continue; // the sub-quads do not face each other
-            std::vector<Point<2>> m_polygon;
-            for (const unsigned int i : m_nodes)
-              m_polygon.push_back(in_plane(master.x[i]));
-            // The master faces the other way: clockwise in this plane.
-            std::reverse(m_polygon.begin(), m_polygon.end());
-            if (!(polygon_area(m_polygon) > 0.))
-              continue;
-            const std::vector<Point<2>> overlap =
-              clip_polygon(m_polygon, s_polygon);
-            if (overlap.size() < 3)
-              continue;
-            const double area = polygon_area(overlap);
-            if (!(area > 1e-12 * s_area))
-              continue;
-
-            Point<2> centroid;
-            for (const Point<2> &p : overlap)
-              centroid += p / static_cast<double>(overlap.size());
-            const Point<2> m_start(0.25 * (mq % 2) + 0.25,
-                                   0.25 * (mq / 2) + 0.25);
-            for (std::size_t e = 0; e < overlap.size(); ++e)
-              {
-                const Point<2> &a = overlap[e];
-                const Point<2> &b = overlap[(e + 1) % overlap.size()];
-                const double    triangle_area = 0.5 * orient(centroid, a, b);
-                if (!(triangle_area > 0.))
-                  continue;
-                for (const TrianglePoint &g : triangle_rule())
-                  {
-                    const Point<2>   q2 = g.l0 * centroid + g.l1 * a + g.l2 * b;
-                    const Point<dim> q  = centre + q2[0] * t1 + q2[1] * t2;
-                    Point<2>         xi_s, xi_m;
-                    if (!slave.project_along(q, n0, s_start, xi_s) ||
-                        !master.project_along(q, n0, m_start, xi_m))
-                      continue;
-                    points.push_back(
-                      {clamp(xi_s), clamp(xi_m), g.w * triangle_area});
-                  }
-              }
-          }
-      }
-    return points;
-  }
+  template std::vector<MortarPointOf<double>>
+  mortar_points(const FaceCoordinates<double> &,
+                const FaceCoordinates<double> &);
+  template std::vector<MortarPointOf<ContactAD>>
+  mortar_points(const FaceCoordinates<ContactAD> &,
+                const FaceCoordinates<ContactAD> &);
 } // namespace DuctileContact

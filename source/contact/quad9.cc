@@ -1,3 +1,4 @@
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
 #include <ductile_contact/contact/quad9.h>
@@ -82,6 +83,36 @@ namespace DuctileContact
     const auto           t = tangents(xi);
     const Tensor<1, dim> n = cross_product_3d(t[0], t[1]);
     return n / n.norm();
+  }
+
+
+
+  std::array<Tensor<2, dim>, 9>
+  Quad9::normal_derivatives(const Point<2> &xi) const
+  {
+    // n = c / |c|, c = x_xi x x_eta: dn = (I - n n) dc / |c| with dc =
+    // dN_i/dxi (dx_i x x_eta) + dN_i/deta (x_xi x dx_i).
+    std::array<double, 9> n, dxi, deta;
+    shape(xi, n, &dxi, &deta);
+    const auto           t      = tangents(xi);
+    const Tensor<1, dim> c      = cross_product_3d(t[0], t[1]);
+    const double         length = c.norm();
+    const Tensor<1, dim> normal = c / length;
+    const Tensor<2, dim> P =
+      (unit_symmetric_tensor<dim>() - outer_product(normal, normal)) / length;
+    std::array<Tensor<2, dim>, 9> derivatives;
+    for (unsigned int i = 0; i < 9; ++i)
+      for (unsigned int m = 0; m < dim; ++m)
+        {
+          Tensor<1, dim> e;
+          e[m]                    = 1.;
+          const Tensor<1, dim> dc = dxi[i] * cross_product_3d(e, t[1]) +
+                                    deta[i] * cross_product_3d(t[0], e);
+          const Tensor<1, dim> dn = P * dc;
+          for (unsigned int r = 0; r < dim; ++r)
+            derivatives[i][r][m] = dn[r];
+        }
+    return derivatives;
   }
 
 

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace DuctileContact
 {
@@ -144,8 +145,9 @@ namespace DuctileContact
         total.staggered_iterations = r.staggered_iterations;
         total.residual_norms       = r.residual_norms;
         total.convergence_rate     = r.convergence_rate;
-        total.info                 = r.info;
-        total.augmentations        = k;
+        total.tangent_error = std::fmax(total.tangent_error, r.tangent_error);
+        total.info          = r.info;
+        total.augmentations = k;
         if (!r.converged)
           {
             total.failure = r.failure;
@@ -165,6 +167,45 @@ namespace DuctileContact
         verbose_out << "      contact multipliers updated (" << k + 1 << ")"
                     << std::endl;
       }
+  }
+
+
+
+  double
+  NewtonSolver::tangent_error(const StepData                           &step,
+                              const TrilinosWrappers::MPI::BlockVector &u,
+                              const AffineConstraints<double> &constraints)
+  {
+    TrilinosWrappers::MPI::BlockVector k_delta = residual;
+    tangent.vmult(k_delta, delta);
+    constraints.set_zero(k_delta);
+    const double size = delta.linfty_norm();
+    if (!(size > 0.) || !(k_delta.l2_norm() > 0.))
+      return std::numeric_limits<double>::quiet_NaN();
+    const double e = 1e-6 * std::max(u.linfty_norm(), size) / size;
+    TrilinosWrappers::MPI::BlockVector difference = residual;
+    for (const double sign : {1., -1.})
+      {
+        TrilinosWrappers::MPI::BlockVector trial = u;
+        trial.add(sign * e, delta);
+        u_ghosted = trial;
+        const AssemblyTargets targets{nullptr, nullptr, &residual, nullptr};
+        assembler.assemble(u_ghosted, step, constraints, targets);
+        if (contact)
+          contact->assemble(u_ghosted, constraints, targets);
+        if (sign > 0.)
+          difference = residual;
+        else
+          difference -= residual;
+      }
+    difference /= 2. * e;
+    difference -= k_delta;
+    const double       error = difference.l2_norm() / k_delta.l2_norm();
+    std::ostringstream text;
+    text << std::scientific << std::setprecision(2) << error;
+    verbose_out << "        tangent check: |K d - dR/de| / |K d| = "
+                << text.str() << std::endl;
+    return error;
   }
 
 
@@ -214,6 +255,8 @@ namespace DuctileContact
                               : std::array<bool, 3>{{true, true, false}});
             total.iterations += r.iterations;
             total.linear_iterations += r.linear_iterations;
+            total.tangent_error =
+              std::fmax(total.tangent_error, r.tangent_error);
             total.info = r.info;
             if (!r.converged)
               {
@@ -402,6 +445,9 @@ namespace DuctileContact
           }
         constraints.distribute(delta);
         report.linear_iterations += n_linear;
+        if (parameters.check_tangent && !pending)
+          report.tangent_error = std::fmax(report.tangent_error,
+                                           tangent_error(step, u, constraints));
 
         // Backtracking: shorten while an element inverts or, once the
         // Dirichlet data are reached, while the merit does not decrease.

@@ -91,6 +91,14 @@ namespace DuctileContact
                       "Halvings of the Newton update before the step counts "
                       "as failed.",
                       Patterns::Integer(0, 30));
+    prm.add_parameter(
+      "Check tangent",
+      check_tangent,
+      "For developers of materials and contact terms: compare the tangent "
+      "with central finite differences of the residual along every Newton "
+      "update, |K d - (R(u + e d) - R(u - e d)) / 2e| / |K d| on the free "
+      "DoFs (two extra residual assemblies per iteration); the largest "
+      "value of each step goes to the statistics column tangent_error.");
     prm.leave_subsection();
   }
 

@@ -8,6 +8,7 @@
 
 #include <ductile_contact/contact/contact_parameters.h>
 #include <ductile_contact/contact/contact_surface.h>
+#include <ductile_contact/contact/nodal_contact.h>
 #include <ductile_contact/materials/body_parameters.h>
 #include <ductile_contact/solver/system_assembler.h>
 
@@ -57,24 +58,24 @@ namespace DuctileContact
    * over the overlap of each slave face with its candidate master faces,
    * n_j the averaged nodal normal (g_j >= 0 open).
    *
-   * Enforcement (KKT (44)): augmented Lagrangian, lambda_j = max(0,
-   * lambdahat_j - eps_N g_j / A_j), contact force f = sum_j lambda_j
-   * [D_jk n_j on slave node k | -M_jl n_j on master node l]; Newton
+   * Enforcement (KKT (44)) and friction (48) per slave node
+   * (nodal_contact()): augmented Lagrangian, lambda_j = max(0, lambdahat_j
+   * - eps_N g_j / A_j), Coulomb friction with a tangential penalty and the
+   * return map on the slip since the last accepted step; the node
+   * transmits the traction f_j = lambda_j n_j + t_j, i.e. the contact force
+   * D_jk f_j on slave node k and -M_jl f_j on master node l. Newton
    * iterates with lambdahat fixed, augment() then sets lambdahat <- lambda
-   * until max_j (-g_j / A_j) is below the tolerance. The tangent is
-   * eps_N / A_j a_j a_j^T with a_j = dg_j/dx for D, M and n_j held fixed
-   * (their change with the geometry is not linearised yet: Newton then
-   * converges linearly when the contact zone moves or rotates; in
-   * small-sliding, small-rotation contact the neglected terms are of the
-   * order of the contact strain).
+   * until max_j (-g_j / A_j) is below the tolerance.
    *
-   * Friction (48), per slave node with lambda_j > 0: slip increment s_j =
-   * T_j (sum_k D_jk (x_k - x_k,n) - sum_l M_jl (x_l - x_l,n)) / A_j since
-   * the last accepted step (T_j = I - n_j n_j), trial traction t_n rotated
-   * into the current tangent plane + eps_T s_j, return map to mu_c
-   * lambda_j; residual sum_j A_j (ds_j/dx)^T t_j, tangent with the same
-   * frozen D, M, n_j (not symmetric while slipping); dissipation (47)
-   * sum_j A_j t_j . (s_j - (t_j - t_n)/eps_T).
+   * Consistent linearisation: d(D_jk f_j) = dD_jk f_j + D_jk (df_j/da)
+   * (da/dx), with a = (A_j, G_j, H_j, n_j) the nodal aggregates
+   * (nodal_contact.h). dD and dM come from forward AD through the whole
+   * segment-based integration of each face pair (MortarFace: clipping,
+   * auxiliary planes, back-projection, dual basis coefficients), dn_j from
+   * the analytic derivative of the face normals it averages, df_j/da from
+   * AD of the nodal law. The tangent is therefore exact for the branch
+   * taken (active set, stick/slip, which polygon vertices are clipped), and
+   * not symmetric.
    *
    * Search: a bounding-box broad phase (boxes enlarged by the search
    * radius) once per load step in begin_step(); the candidates fix the
@@ -149,29 +150,32 @@ namespace DuctileContact
   private:
     struct Pair
     {
-      ContactSurface slave, master;
-      double         penalty       = 0.;                 ///< eps_N [Pa/m]
-      double         search_radius = 0., tolerance = 0.; ///< [m]
-      double         face_size          = 0.; ///< smallest slave face size [m]
-      double         friction           = 0.; ///< mu_c
-      double         tangential_penalty = 0.; ///< eps_T [Pa/m]
+      unsigned int           index = 0; ///< position in pairs and summaries
+      ContactSurface         slave, master;
+      bool                   dual = true; ///< dual or standard multiplier basis
+      NodalContactParameters law;
+      double                 search_radius = 0., tolerance = 0.; ///< [m]
+      double                 face_size = 0.; ///< smallest slave face size [m]
       /// Node positions of the last accepted step (slip increments).
       std::vector<dealii::Point<dim>> slave_committed, master_committed;
-      /// Tangential traction per slave node: current and accepted [Pa].
-      std::vector<dealii::Tensor<1, dim>> traction, committed_traction;
-      /// Trial traction and slip state (0 none, 1 stick, 2 slip).
-      std::vector<dealii::Tensor<1, dim>> trial_traction;
-      std::vector<unsigned char>          friction_state;
-      double dissipation = 0., step_dissipation = 0.; ///< [J]
+      /// Tangential traction per slave node of the last accepted step [Pa].
+      std::vector<dealii::Tensor<1, dim>> committed_traction;
+      double step_dissipation = 0., dissipation = 0.; ///< [J]
       /// Candidate master faces of each slave face.
       std::vector<std::vector<unsigned int>> candidates;
-      /// Multipliers per slave node: iterate and committed [Pa].
+      /// Multipliers lambdahat per slave node: iterate and committed [Pa].
       std::vector<double> multiplier, committed_multiplier;
-      // Of the last assembly, per slave node:
+      // Of the last assembly:
+      /// Current slave faces.
+      std::vector<Quad9> slave_faces;
+      /// (slave face, master face) pairs that overlap.
+      std::vector<std::pair<unsigned int, unsigned int>> overlaps;
+      /// Per slave node: D_jk, M_jl, the aggregates (nodal_contact.h), the
+      /// length of the summed face normals n_j is made from, the state.
       std::vector<std::map<unsigned int, double>> D, M;
-      std::vector<dealii::Tensor<1, dim>>         normal;
-      std::vector<double>                         area, gap, pressure;
-      std::vector<bool>                           active;
+      std::vector<NodalAggregates>                aggregates;
+      std::vector<double>                         normal_length;
+      std::vector<NodalContactState>              nodal;
     };
 
     /// @p constraints (which know the locally relevant DoFs only) plus the
@@ -184,10 +188,23 @@ namespace DuctileContact
     extend_constraints(const dealii::AffineConstraints<double> &constraints,
                        dealii::AffineConstraints<double>       &extended) const;
 
-    /// D, M, normals, A_j, g_j and lambda_j of @p pair on its current
-    /// geometry.
+    /// D, M, normals, aggregates and nodal states of @p pair on its
+    /// current geometry.
     void
     integrate(Pair &pair);
+
+    /// d(aggregates of node j)/dx from the derivatives of D and M
+    /// (overlapping face pairs with a node in @p needed) and adds the
+    /// dD f_j, dM f_j part of the tangent to @p targets. Keys of @p
+    /// gradients: 3 node + c, master nodes after the slave nodes.
+    void
+    linearise_operators(
+      const Pair                                                  &pair,
+      const std::vector<bool>                                     &needed,
+      const dealii::AffineConstraints<double>                     &constraints,
+      const AssemblyTargets                                       &targets,
+      std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
+      const;
 
     /// The slave and master nodes that node @p j couples to.
     void

@@ -4,16 +4,23 @@
 
 #include <ductile_contact/contact/quad9.h>
 
+#include <array>
 #include <vector>
 
 namespace DuctileContact
 {
+  /// Current coordinates x_i[c] of the nine nodes of a quad9 face (node
+  /// order of Quad9), in a number type that may carry derivatives.
+  template <typename Number>
+  using FaceCoordinates = std::array<std::array<Number, dim>, 9>;
+
   /// One integration point of a slave/master face pair.
-  struct MortarPoint
+  template <typename Number>
+  struct MortarPointOf
   {
-    dealii::Point<2> slave;  ///< parameter point on the slave face
-    dealii::Point<2> master; ///< parameter point on the master face
-    double           weight; ///< area weight [m^2]
+    std::array<Number, 2> slave;  ///< parameter point on the slave face
+    std::array<Number, 2> master; ///< parameter point on the master face
+    Number                weight; ///< area weight [m^2]
   };
 
   /**
@@ -23,15 +30,34 @@ namespace DuctileContact
    * its centre, normal n0 = the sub-quad normal; the vertices of every master
    * sub-quad that faces it (n0 . n_m < 0) are projected onto the plane, the
    * two convex polygons are clipped (Sutherland-Hodgman), the overlap is
-   * split into triangles (fan from its centroid) with a 7-point Gauss rule
-   * of degree 5 each, and every Gauss point is projected back along n0 onto
+   * split into triangles (fan from its centroid) with a 16-point collapsed
+   * Gauss rule each, and every Gauss point is projected back along n0 onto
    * the curved slave and master faces (parameter points clamped to the
    * face). The weights are areas on the plane, so that a uniform field is
    * integrated over the same overlap on both sides: this is what makes the
    * patch test pass.
    *
-   * A pure function of the two current face geometries.
+   * A pure function of the two current face geometries. With Number =
+   * ContactAD (contact_ad.h) the points and weights carry their derivatives
+   * with respect to the 54 face coordinates: the branches (which sub-quads
+   * face each other, which polygon vertices are clipped) are decided on the
+   * values, the Newton back-projection runs on the values and one final
+   * Newton correction in ContactAD gives the derivatives of the parameter
+   * points by the implicit function theorem. Instantiated for double and
+   * ContactAD.
    */
+  template <typename Number>
+  std::vector<MortarPointOf<Number>>
+  mortar_points(const FaceCoordinates<Number> &slave,
+                const FaceCoordinates<Number> &master);
+
+  /// mortar_points() on plain faces.
+  struct MortarPoint
+  {
+    dealii::Point<2> slave;  ///< parameter point on the slave face
+    dealii::Point<2> master; ///< parameter point on the master face
+    double           weight; ///< area weight [m^2]
+  };
   std::vector<MortarPoint>
   mortar_points(const Quad9 &slave, const Quad9 &master);
 

@@ -38,6 +38,11 @@ namespace DuctileContact
     dealii::Tensor<1, dim>
     normal(const dealii::Point<2> &xi) const;
 
+    /// Derivatives of normal(@p xi) with respect to the node positions:
+    /// entry [i][c][m] = d n_c / d x_i,m.
+    std::array<dealii::Tensor<2, dim>, 9>
+    normal_derivatives(const dealii::Point<2> &xi) const;
+
     /// The parameter point where the line p + t d meets the patch (Newton on
     /// (xi, eta, t) from @p start); returns false if Newton does not
     /// converge or the line is parallel to the patch.
@@ -46,6 +51,25 @@ namespace DuctileContact
                   const dealii::Tensor<1, dim> &d,
                   const dealii::Point<2>       &start,
                   dealii::Point<2>             &xi) const;
+
+    /// shape() in a number type that may carry derivatives.
+    template <typename Number>
+    static void
+    shape_of(const std::array<Number, 2> &xi, std::array<Number, 9> &values)
+    {
+      std::array<Number, 3> la, lb;
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          const Number          &t = xi[d];
+          std::array<Number, 3> &l = d == 0 ? la : lb;
+          l[0]                     = 2. * (t - 0.5) * (t - 1.);
+          l[1]                     = 4. * t * (1. - t);
+          l[2]                     = 2. * t * (t - 0.5);
+        }
+      for (unsigned int b = 0; b < 3; ++b)
+        for (unsigned int a = 0; a < 3; ++a)
+          values[a + 3 * b] = la[a] * lb[b];
+    }
 
     /// Parameter point of node @p i.
     static dealii::Point<2>

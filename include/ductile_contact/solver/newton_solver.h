@@ -34,7 +34,9 @@ namespace DuctileContact
     std::vector<double> residual_norms;
     /// Observed order log(r_k+1/r_k)/log(r_k/r_k-1) of the last three
     /// residuals (2 = quadratic); NaN if fewer than three are meaningful.
-    double       convergence_rate = std::numeric_limits<double>::quiet_NaN();
+    double convergence_rate = std::numeric_limits<double>::quiet_NaN();
+    /// Largest relative tangent error of the step (Newton/Check tangent).
+    double       tangent_error = std::numeric_limits<double>::quiet_NaN();
     std::string  failure;
     AssemblyInfo info;
   };
@@ -103,6 +105,14 @@ namespace DuctileContact
     solve_coupled(const StepData                             &step,
                   dealii::TrilinosWrappers::MPI::BlockVector &u,
                   dealii::TrilinosWrappers::MPI::BlockVector &internal_force);
+
+    /// Newton/Check tangent: |K delta - (R(u + e delta) - R(u - e delta)) /
+    /// 2e| / |K delta| on the free DoFs, e delta of 1e-6 the size of u; the
+    /// tangent and delta of the current iteration, @p residual overwritten.
+    double
+    tangent_error(const StepData                                   &step,
+                  const dealii::TrilinosWrappers::MPI::BlockVector &u,
+                  const dealii::AffineConstraints<double> &constraints);
 
     const NewtonParameters              &parameters;
     const CouplingParameters            &coupling;

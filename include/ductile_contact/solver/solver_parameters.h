@@ -37,6 +37,8 @@ namespace DuctileContact
     double       absolute_tolerance    = 1.e-12;
     bool         line_search           = true;
     unsigned int max_line_search_steps = 6;
+    /// Compare K delta with central differences of R along delta.
+    bool check_tangent = false;
 
     void
     declare(dealii::ParameterHandler &prm);

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <deal.II/base/config.h>
+
+#include <Sacado.hpp>
+
+namespace DuctileContact
+{
+  /**
+   * Forward-mode automatic-differentiation number of the contact
+   * linearisation: derivatives with respect to the 54 current coordinates
+   * of one slave/master quad9 face pair, direction 3 i + c for slave node i
+   * and 27 + 3 i + c for master node i (component c). A fixed size keeps
+   * the numbers on the stack (deal.II's tensors take only DFad, so the
+   * contact geometry works on plain arrays).
+   */
+  using ContactAD = Sacado::Fad::SFad<double, 54>;
+
+  inline double
+  value_of(const double x)
+  {
+    return x;
+  }
+
+  inline double
+  value_of(const ContactAD &x)
+  {
+    return x.val();
+  }
+} // namespace DuctileContact
