@@ -10,7 +10,8 @@
 // Checked at h = a/4: a within 8 % and p0 within 5 % of Hertz
 // (benchmarks/contact/hertz has the converged study: 1.5 % at a/8); the contact
 // force balances the reaction on the top face; the penetration is below the
-// tolerance. On 1 and 2 MPI ranks, the slave surface then spanning both (its
+// tolerance; the contact tangent (Newton/Check tangent) matches central
+// differences of the residual. On 1 and 2 MPI ranks, the slave surface then spanning both (its
 // symmetry-plane and slab-face DoFs carry Dirichlet conditions that a rank must
 // know for master rows it does not own): identical output.
 #include "tests.h"
@@ -57,12 +58,15 @@ end
 subsection Output
   set Interval = 1
 end
+subsection Newton
+  set Check tangent = true
+end
 )";
   }
 
   struct Result
   {
-    double a_error, p0_error, balance, penetration;
+    double a_error, p0_error, balance, penetration, tangent_error;
   };
 
   Result
@@ -107,7 +111,8 @@ end
             // contact1_force: what the slave (indenter) exerts on the
             // master; the top face's reaction F balances its opposite.
             std::abs(F - stats.at("contact1_force_y").back()) / std::abs(F),
-            stats.at("contact1_max_penetration").back()};
+            stats.at("contact1_max_penetration").back(),
+            stats.at("tangent_error").back()};
   }
 } // namespace
 
@@ -127,5 +132,8 @@ main(int argc, char **argv)
       << "contact force balances the reaction (1e-6, Newton tolerance): "
       << Testing::yes_no(fine.balance < 1e-6) << std::endl
       << "penetration below 1e-6 h: "
-      << Testing::yes_no(fine.penetration < 1e-6 * 0.0025) << std::endl;
+      << Testing::yes_no(fine.penetration < 1e-6 * 0.0025) << std::endl
+      << "consistent tangent (K d against central differences of R along the "
+         "last Newton update, 1e-6): "
+      << Testing::yes_no(fine.tangent_error < 1e-6) << std::endl;
 }

@@ -145,7 +145,8 @@ namespace DuctileContact
         total.staggered_iterations = r.staggered_iterations;
         total.residual_norms       = r.residual_norms;
         total.convergence_rate     = r.convergence_rate;
-        total.tangent_error = std::fmax(total.tangent_error, r.tangent_error);
+        if (std::isfinite(r.tangent_error))
+          total.tangent_error = r.tangent_error;
         total.info          = r.info;
         total.augmentations = k;
         if (!r.converged)
@@ -255,8 +256,8 @@ namespace DuctileContact
                               : std::array<bool, 3>{{true, true, false}});
             total.iterations += r.iterations;
             total.linear_iterations += r.linear_iterations;
-            total.tangent_error =
-              std::fmax(total.tangent_error, r.tangent_error);
+            if (std::isfinite(r.tangent_error))
+              total.tangent_error = r.tangent_error;
             total.info = r.info;
             if (!r.converged)
               {
@@ -446,8 +447,7 @@ namespace DuctileContact
         constraints.distribute(delta);
         report.linear_iterations += n_linear;
         if (parameters.check_tangent && !pending)
-          report.tangent_error = std::fmax(report.tangent_error,
-                                           tangent_error(step, u, constraints));
+          report.tangent_error = tangent_error(step, u, constraints);
 
         // Backtracking: shorten while an element inverts or, once the
         // Dirichlet data are reached, while the merit does not decrease.

@@ -97,8 +97,11 @@ namespace DuctileContact
       "For developers of materials and contact terms: compare the tangent "
       "with central finite differences of the residual along every Newton "
       "update, |K d - (R(u + e d) - R(u - e d)) / 2e| / |K d| on the free "
-      "DoFs (two extra residual assemblies per iteration); the largest "
-      "value of each step goes to the statistics column tangent_error.");
+      "DoFs (two extra residual assemblies per iteration; printed with "
+      "Verbosity = 2); the value of the last update of each step, the one "
+      "nearest the solution, goes to the statistics column tangent_error. "
+      "Expect round-off (1e-6 or less) except where the residual has a kink "
+      "within the difference step (a node just touching, flush edges).");
     prm.leave_subsection();
   }
 

@@ -35,7 +35,8 @@ namespace DuctileContact
     /// Observed order log(r_k+1/r_k)/log(r_k/r_k-1) of the last three
     /// residuals (2 = quadratic); NaN if fewer than three are meaningful.
     double convergence_rate = std::numeric_limits<double>::quiet_NaN();
-    /// Largest relative tangent error of the step (Newton/Check tangent).
+    /// Relative tangent error of the last Newton update of the step that
+    /// was checked (Newton/Check tangent): the one nearest the solution.
     double       tangent_error = std::numeric_limits<double>::quiet_NaN();
     std::string  failure;
     AssemblyInfo info;
