@@ -6,7 +6,9 @@
 //    until every node in contact slips; in steady sliding (t = 2, once the
 //    slip directions have aligned) |F_T| = mu_c |F_N| (the friction and
 //    normal forces the slave exerts on the master) to 1e-6,
-//    the top's reaction balances F_T + F_N along x, and in the last steps
+//    the top's reaction balances F_T + F_N along x, the ratio |F_T|/|F_N|
+//    grows while some nodes stick and the block starts to slide as a
+//    whole (no node sticks) when it reaches mu_c, never above; in the last steps
 //    the work done goes into the dissipation (47): the energy balance
 //    W_ext - Psi^e - D_c stays constant to 0.1 % of that work;
 //  - mu_c = 0: no friction force: all the top's reaction along x comes
@@ -89,6 +91,22 @@ main(int argc, char **argv)
       s.at("contact1_dissipation")[last] - s.at("contact1_dissipation")[first];
     const double dR =
       s.at("energy_residual")[last] - s.at("energy_residual")[first];
+    // Onset of gross sliding: the first step in which no node sticks.
+    std::size_t onset     = last + 1;
+    double      max_ratio = 0;
+    for (std::size_t n = 1; n <= last; ++n)
+      {
+        max_ratio = std::max(max_ratio,
+                             norm(s, "friction", n) / norm(s, "force", n));
+        if (onset > last && s.at("contact1_sticking_nodes")[n] == 0 &&
+            s.at("contact1_slipping_nodes")[n] > 0)
+          onset = n;
+      }
+    const double onset_ratio =
+      onset <= last ? norm(s, "friction", onset) / norm(s, "force", onset) : 0.;
+    std::cout << "onset of sliding at t = "
+              << (onset <= last ? s.at("time")[onset] : -1.) << ", ratio "
+              << onset_ratio << ", largest ratio " << max_ratio << std::endl;
     std::cout << "mu 0.3: |F_T|/|F_N| " << ratio << ", balance " << balance
               << ", dW " << dW << ", dD " << dD << ", d residual " << dR
               << ", slipping " << s.at("contact1_slipping_nodes")[last]
@@ -105,6 +123,11 @@ main(int argc, char **argv)
         << "  steady sliding: dissipation > 95 % of the work done, energy "
            "balance W_ext - Psi^e - D_c closes to 0.1 % of it: "
         << Testing::yes_no(dD > 0.95 * dW && std::abs(dR) < 1e-3 * dW)
+        << std::endl
+        << "  the block starts to slide (no node sticks any more) when |F_T| "
+           "reaches mu_c |F_N| (1e-3), never above it (1e-6): "
+        << Testing::yes_no(onset < last && std::abs(onset_ratio - 0.3) < 0.3e-3 &&
+                           max_ratio < 0.3 * (1. + 1e-6))
         << std::endl
         << "  the interface stuck at first (no slip before the shear): "
         << Testing::yes_no(s.at("contact1_slipping_nodes")[8] == 0 &&
