@@ -8,8 +8,8 @@
 //    normal forces the slave exerts on the master) to 1e-6,
 //    the top's reaction balances F_T + F_N along x, the ratio |F_T|/|F_N|
 //    grows while some nodes stick and the block starts to slide as a
-//    whole (no node sticks) when it reaches mu_c, never above; in the last steps
-//    the work done goes into the dissipation (47): the energy balance
+//    whole (no node sticks) when it reaches mu_c, never above; in the last
+//    steps the work done goes into the dissipation (47): the energy balance
 //    W_ext - Psi^e - D_c stays constant to 0.1 % of that work;
 //  - mu_c = 0: no friction force: all the top's reaction along x comes
 //    from the normal pressure on the (slightly dented) interface;
@@ -96,8 +96,8 @@ main(int argc, char **argv)
     double      max_ratio = 0;
     for (std::size_t n = 1; n <= last; ++n)
       {
-        max_ratio = std::max(max_ratio,
-                             norm(s, "friction", n) / norm(s, "force", n));
+        max_ratio =
+          std::max(max_ratio, norm(s, "friction", n) / norm(s, "force", n));
         if (onset > last && s.at("contact1_sticking_nodes")[n] == 0 &&
             s.at("contact1_slipping_nodes")[n] > 0)
           onset = n;
@@ -126,7 +126,8 @@ main(int argc, char **argv)
         << std::endl
         << "  the block starts to slide (no node sticks any more) when |F_T| "
            "reaches mu_c |F_N| (1e-3), never above it (1e-6): "
-        << Testing::yes_no(onset < last && std::abs(onset_ratio - 0.3) < 0.3e-3 &&
+        << Testing::yes_no(onset < last &&
+                           std::abs(onset_ratio - 0.3) < 0.3e-3 &&
                            max_ratio < 0.3 * (1. + 1e-6))
         << std::endl
         << "  the interface stuck at first (no slip before the shear): "

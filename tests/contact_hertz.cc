@@ -11,9 +11,10 @@
 // (benchmarks/contact/hertz has the converged study: 1.5 % at a/8); the contact
 // force balances the reaction on the top face; the penetration is below the
 // tolerance; the contact tangent (Newton/Check tangent) matches central
-// differences of the residual. On 1 and 2 MPI ranks, the slave surface then spanning both (its
-// symmetry-plane and slab-face DoFs carry Dirichlet conditions that a rank must
-// know for master rows it does not own): identical output.
+// differences of the residual. On 1 and 2 MPI ranks, the slave surface then
+// spanning both (its symmetry-plane and slab-face DoFs carry Dirichlet
+// conditions that a rank must know for master rows it does not own): identical
+// output.
 #include "tests.h"
 
 #include <cmath>

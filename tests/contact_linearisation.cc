@@ -69,8 +69,9 @@ namespace
   void
   check_operators(std::ostream &out, const bool dual, const bool flat)
   {
-    const Quad9 slave  = face(0., false, 0., 0., 0., flat ? 0. : 0.08);
-    const Quad9 master = face(flat ? 0. : 2e-3, true, 0.4, 0.35, 0.2, flat ? 0. : -0.05);
+    const Quad9 slave = face(0., false, 0., 0., 0., flat ? 0. : 0.08);
+    const Quad9 master =
+      face(flat ? 0. : 2e-3, true, 0.4, 0.35, 0.2, flat ? 0. : -0.05);
     FacePairOperators exact, plus, minus;
     MortarFace(slave, dual).integrate(master, exact, true);
     FacePairOperators values;
@@ -80,10 +81,9 @@ namespace
     const double h                = 1e-6;
     for (unsigned int i = 0; i < 9; ++i)
       for (unsigned int k = 0; k < 9; ++k)
-        value_difference =
-          std::max({value_difference,
-                    std::abs(values.D[i][k] - exact.D[i][k]),
-                    std::abs(values.M[i][k] - exact.M[i][k])});
+        value_difference = std::max({value_difference,
+                                     std::abs(values.D[i][k] - exact.D[i][k]),
+                                     std::abs(values.M[i][k] - exact.M[i][k])});
     for (unsigned int a = 0; a < face_pair_coordinates; ++a)
       {
         Quad9 s_plus = slave, s_minus = slave, m_plus = master,
@@ -112,9 +112,8 @@ namespace
     const std::string name =
       std::string(dual ? "dual basis" : "standard basis") +
       (flat ? ", flat touching faces" : "");
-    std::cout << name << ": dD " << dD.relative()
-              << " dM " << dM.relative() << " values " << value_difference
-              << std::endl;
+    std::cout << name << ": dD " << dD.relative() << " dM " << dM.relative()
+              << " values " << value_difference << std::endl;
     out << name << ": values with and without derivatives agree (1e-14): "
         << Testing::yes_no(value_difference < 1e-14)
         << ", dD and dM match finite differences (1e-7): "
@@ -125,10 +124,11 @@ namespace
   void
   check_normal(std::ostream &out)
   {
-    const Quad9    q = face(0., false, 0.3, 0.1, 0.2, 0.2);
-    Error          e;
-    const double   h = 1e-6;
-    for (const Point<2> xi : {Point<2>(0., 0.), Point<2>(0.5, 1.), Point<2>(0.3, 0.6)})
+    const Quad9  q = face(0., false, 0.3, 0.1, 0.2, 0.2);
+    Error        e;
+    const double h = 1e-6;
+    for (const Point<2> xi :
+         {Point<2>(0., 0.), Point<2>(0.5, 1.), Point<2>(0.3, 0.6)})
       {
         const auto dn = q.normal_derivatives(xi);
         for (unsigned int i = 0; i < 9; ++i)
@@ -172,15 +172,15 @@ namespace
     for (unsigned int d = 0; d < 10; ++d)
       {
         NodalAggregates plus = a, minus = a;
-        double         &vp   = d == 0 ? plus.area :
-                               d < 4  ? plus.G[d - 1] :
-                               d < 7  ? plus.H[d - 4] :
-                                        plus.normal[d - 7];
-        double         &vm   = d == 0 ? minus.area :
-                               d < 4  ? minus.G[d - 1] :
-                               d < 7  ? minus.H[d - 4] :
-                                        minus.normal[d - 7];
-        const double    h    = 1e-7 * std::max(std::abs(vp), 1e-5);
+        double         &vp = d == 0  ? plus.area
+                             : d < 4 ? plus.G[d - 1]
+                             : d < 7 ? plus.H[d - 4]
+                                     : plus.normal[d - 7];
+        double         &vm = d == 0  ? minus.area
+                             : d < 4 ? minus.G[d - 1]
+                             : d < 7 ? minus.H[d - 4]
+                                     : minus.normal[d - 7];
+        const double    h  = 1e-7 * std::max(std::abs(vp), 1e-5);
         vp += h;
         vm -= h;
         const Tensor<1, dim> fd =

@@ -40,8 +40,9 @@ namespace DuctileContact
     prm.add_parameter("Penalty factor",
                       penalty_factor,
                       "Normal penalty of the augmented Lagrangian, eps_N = "
-                      "factor x E / h with E Young's modulus of the slave "
-                      "body and h its smallest contact-face size [-]. It "
+                      "factor x E / h with E the smaller Young's modulus of "
+                      "the two bodies and h the smallest slave face size "
+                      "[-]. It "
                       "sets how fast the multiplier updates converge, not "
                       "the answer.",
                       Patterns::Double(1e-6));

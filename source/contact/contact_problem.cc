@@ -72,12 +72,17 @@ namespace DuctileContact
                     std::to_string(prm.master_boundary_id),
                     "the id of a boundary of the mesh (no face has it)");
 
-        // eps_N = factor E / h for the slave body.
-        const auto body = bodies.find(pair.slave.faces[0].material_id);
-        Assert(body != bodies.end(), ExcInternalError());
-        const double mu             = body->second->shear_modulus;
-        const double kappa          = body->second->bulk_modulus;
-        const double E              = 9. * kappa * mu / (3. * kappa + mu);
+        // eps_N = factor E / h, E the smaller Young's modulus of the two
+        // bodies (the interface is as stiff as the softer one).
+        const auto youngs_modulus = [&](const ContactSurface &side) {
+          const auto body = bodies.find(side.faces[0].material_id);
+          Assert(body != bodies.end(), ExcInternalError());
+          const double mu    = body->second->shear_modulus;
+          const double kappa = body->second->bulk_modulus;
+          return 9. * kappa * mu / (3. * kappa + mu);
+        };
+        const double E =
+          std::min(youngs_modulus(pair.slave), youngs_modulus(pair.master));
         const double h              = pair.slave.smallest_face_size();
         pair.index                  = p;
         pair.dual                   = prm.multiplier_basis == "dual";

@@ -162,10 +162,11 @@ namespace DuctileContact
 
 
   MortarFace::MortarFace(const Quad9 &slave, const bool dual)
-    : slave(slave)
-    , dual(dual)
-    , coefficients(basis_coefficients(coordinates(slave), dual))
-  {}
+      : slave(slave)
+      , dual(dual)
+      , coefficients(basis_coefficients(coordinates(slave), dual))
+  {
+  }
 
 
 

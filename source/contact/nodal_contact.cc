@@ -1,7 +1,6 @@
 #include <ductile_contact/contact/nodal_contact.h>
 
 #include <Sacado.hpp>
-
 #include <cmath>
 
 namespace DuctileContact
@@ -14,8 +13,8 @@ namespace DuctileContact
                 const Tensor<1, dim>         &committed_traction,
                 const NodalContactParameters &p)
   {
-    using AD = Sacado::Fad::SFad<double, 10>;
-    using V  = std::array<AD, dim>;
+    using AD       = Sacado::Fad::SFad<double, 10>;
+    using V        = std::array<AD, dim>;
     const auto dot = [](const V &x, const V &y) -> AD {
       return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
     };
@@ -57,8 +56,8 @@ namespace DuctileContact
         V committed;
         for (unsigned int c = 0; c < dim; ++c)
           committed[c] = committed_traction[c];
-        V          old       = tangential(committed);
-        const AD   old_norm2 = dot(old, old);
+        V        old       = tangential(committed);
+        const AD old_norm2 = dot(old, old);
         if (old_norm2.val() > 0.)
           {
             const AD scale = committed_traction.norm() / sqrt(old_norm2);
@@ -69,9 +68,9 @@ namespace DuctileContact
         V       t_trial;
         for (unsigned int c = 0; c < dim; ++c)
           t_trial[c] = old[c] + p.tangential_penalty * slip[c] / A;
-        const AD trial_norm = sqrt(dot(t_trial, t_trial));
-        const AD limit      = p.friction * trial;
-        V        t          = t_trial;
+        const AD trial_norm  = sqrt(dot(t_trial, t_trial));
+        const AD limit       = p.friction * trial;
+        V        t           = t_trial;
         state.friction_state = 1;
         if (trial_norm.val() > limit.val())
           {
@@ -93,8 +92,8 @@ namespace DuctileContact
       }
     for (unsigned int c = 0; c < dim; ++c)
       {
-        state.force_density[c] = state.pressure * a.normal[c] +
-                                 state.traction[c];
+        state.force_density[c] =
+          state.pressure * a.normal[c] + state.traction[c];
         for (unsigned int d = 0; d < 10; ++d)
           state.jacobian[c][d] = f[c].fastAccessDx(d);
       }

@@ -165,8 +165,11 @@ namespace DuctileContact
                             std::to_string(k + 1) + " multiplier updates";
             return total;
           }
-        verbose_out << "      contact multipliers updated (" << k + 1 << ")"
-                    << std::endl;
+        verbose_out << "      contact multipliers updated (" << k + 1
+                    << "); largest penetration before the update:";
+        for (const ContactPairSummary &summary : contact->summary())
+          verbose_out << " " << summary.max_penetration << " m";
+        verbose_out << std::endl;
       }
   }
 
@@ -409,7 +412,7 @@ namespace DuctileContact
             assembler.assemble(u_ghosted, step, constraints, targets);
           if (contact)
             {
-              TimerOutput::Scope scope(timer, "contact: integration, assembly");
+              TimerOutput::Scope scope(timer, "contact: integration, tangent");
               contact->assemble(u_ghosted, constraints, targets);
             }
         }
@@ -475,7 +478,7 @@ namespace DuctileContact
               if (contact)
                 {
                   TimerOutput::Scope scope(timer,
-                                           "contact: integration, assembly");
+                                           "contact: integration, residual");
                   contact->assemble(u_ghosted, constraints, targets);
                 }
               trial_n     = block_norms();

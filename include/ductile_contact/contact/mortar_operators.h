@@ -19,8 +19,8 @@ namespace DuctileContact
     /// overlap (i, k slave nodes, l master nodes) [m^2].
     std::array<std::array<double, 9>, 9> D, M;
     /// dD_ik / dX_a and dM_il / dX_a [m].
-    std::array<std::array<std::array<double, face_pair_coordinates>, 9>, 9>
-      dD, dM;
+    std::array<std::array<std::array<double, face_pair_coordinates>, 9>, 9> dD,
+      dM;
   };
 
   /**

@@ -1,0 +1,87 @@
+#!/usr/bin/env python3
+"""Writes the ironing scene (validation.md rung 13) as a Gmsh 2.2 hexahedral
+mesh: a stiff die with a circular bottom (radius R) on a soft slab, plane
+strain as one element layer of thickness T_Z. All lengths in metres.
+
+Slab (volume 1): [0, L] x [-D, 0], elements H_SLAB (the finer mesh: the
+slab's top is the slave surface). Die (volume 2): x in [X0 - W, X0 + W],
+from its bottom y = R - sqrt(R^2 - (x - X0)^2) (touching the slab at
+x = X0) up to y = HD, elements H_DIE, nodes along vertical lines, the
+bottom nodes exactly on the circle.
+
+Physical tags: surfaces 1 slab bottom, 2 die top, 3 slab top (slave),
+4 die bottom (master), 5 the slab faces z = 0 and z = T_Z of both bodies,
+6 the remaining sides (free).
+
+Usage: make_ironing.py H_SLAB H_DIE OUTPUT.msh
+       (L = 0.06, D = 0.006, R = 0.03, W = 0.01, X0 = 0.02, HD = 0.01,
+       T_Z = H_DIE)
+"""
+import math
+import sys
+
+from gmsh_writer import write_gmsh
+
+h_slab = float(sys.argv[1]) if len(sys.argv) > 1 else 0.001
+h_die = float(sys.argv[2]) if len(sys.argv) > 2 else 0.002
+out = sys.argv[3] if len(sys.argv) > 3 else "ironing.msh"
+L, D, R, W, X0, HD = 0.06, 0.006, 0.03, 0.01, 0.02, 0.01
+zs = [0.0, h_die]
+nodes, elements = [], []
+
+
+def divide(a, b, h):
+    n = max(1, round((b - a) / h))
+    return [a + (b - a) * i / n for i in range(n + 1)]
+
+
+def body(xs, levels, volume, bottom_tag, top_tag):
+    """Hexahedra between the columns xs and the curves levels[j](x)."""
+    first = len(nodes) + 1
+    nx, ny = len(xs), len(levels)
+
+    def nid(i, j, k):
+        return first + i + nx * (j + ny * k)
+
+    for k in range(2):
+        for j in range(ny):
+            for i in range(nx):
+                nodes.append((xs[i], levels[j](xs[i]), zs[k]))
+    for j in range(ny - 1):
+        for i in range(nx - 1):
+            v = [nid(i, j, 0), nid(i + 1, j, 0), nid(i + 1, j + 1, 0), nid(i, j + 1, 0),
+                 nid(i, j, 1), nid(i + 1, j, 1), nid(i + 1, j + 1, 1), nid(i, j + 1, 1)]
+            elements.append((5, volume, v))
+            elements.append((3, 5, v[:4]))
+            elements.append((3, 5, v[4:]))
+            if j == 0:
+                elements.append((3, bottom_tag, [v[0], v[1], v[5], v[4]]))
+            if j == ny - 2:
+                elements.append((3, top_tag, [v[3], v[2], v[6], v[7]]))
+            if i == 0:
+                elements.append((3, 6, [v[0], v[3], v[7], v[4]]))
+            if i == nx - 2:
+                elements.append((3, 6, [v[1], v[2], v[6], v[5]]))
+
+
+# Slab: levels from y = -D up to 0.
+body(divide(0.0, L, h_slab),
+     [(lambda x, y=y: y) for y in divide(-D, 0.0, h_slab)], 1, 1, 3)
+
+
+def bottom(x):
+    return R - math.sqrt(R * R - (x - X0) ** 2)
+
+
+# Die: from the circle up to HD along vertical lines.
+body(divide(X0 - W, X0 + W, h_die),
+     [(lambda x, s=s: bottom(x) + s * (HD - bottom(x))) for s in divide(0.0, 1.0, h_die / HD)],
+     2, 4, 2)
+
+write_gmsh(out,
+           [(2, 1, "slab bottom"), (2, 2, "die top"), (2, 3, "slab top"),
+            (2, 4, "die bottom"), (2, 5, "slab faces"), (2, 6, "sides"),
+            (3, 1, "slab"), (3, 2, "die")],
+           nodes, elements)
+print(f"{out}: {sum(1 for e in elements if e[0] == 5)} hexahedra "
+      f"(slab h = {h_slab:g} m, die h = {h_die:g} m)")
