@@ -58,14 +58,6 @@ end
 )";
   }
 
-  double
-  norm(const Testing::Table &s, const std::string &what, const std::size_t n)
-  {
-    double sum = 0;
-    for (const char *c : {"_x", "_y", "_z"})
-      sum += std::pow(s.at("contact1_" + what + c)[n], 2);
-    return std::sqrt(sum);
-  }
 } // namespace
 
 int
@@ -75,9 +67,10 @@ main(int argc, char **argv)
   std::ofstream                    out = Testing::open_output();
 
   {
-    const auto        s    = Testing::run_scene(sliding_prm(0.3, "2"), "mu03");
-    const std::size_t last = s.at("time").size() - 1;
-    const double ratio     = norm(s, "friction", last) / norm(s, "force", last);
+    const auto        s     = Testing::run_scene(sliding_prm(0.3, "2"), "mu03");
+    const std::size_t last  = s.at("time").size() - 1;
+    const double      ratio = Testing::contact_norm(s, "friction", last) /
+                         Testing::contact_norm(s, "force", last);
     const double balance =
       std::abs(s.at("F2_x")[last] - s.at("contact1_force_x")[last] -
                s.at("contact1_friction_x")[last]) /
@@ -96,14 +89,17 @@ main(int argc, char **argv)
     double      max_ratio = 0;
     for (std::size_t n = 1; n <= last; ++n)
       {
-        max_ratio =
-          std::max(max_ratio, norm(s, "friction", n) / norm(s, "force", n));
+        max_ratio = std::max(max_ratio,
+                             Testing::contact_norm(s, "friction", n) /
+                               Testing::contact_norm(s, "force", n));
         if (onset > last && s.at("contact1_sticking_nodes")[n] == 0 &&
             s.at("contact1_slipping_nodes")[n] > 0)
           onset = n;
       }
-    const double onset_ratio =
-      onset <= last ? norm(s, "friction", onset) / norm(s, "force", onset) : 0.;
+    const double onset_ratio = onset <= last
+                                 ? Testing::contact_norm(s, "friction", onset) /
+                                     Testing::contact_norm(s, "force", onset)
+                                 : 0.;
     std::cout << "onset of sliding at t = "
               << (onset <= last ? s.at("time")[onset] : -1.) << ", ratio "
               << onset_ratio << ", largest ratio " << max_ratio << std::endl;
@@ -139,13 +135,13 @@ main(int argc, char **argv)
     const auto        s    = Testing::run_scene(sliding_prm(0., "1.5"), "mu0");
     const std::size_t last = s.at("time").size() - 1;
     std::cout << "mu 0: F2_x " << s.at("F2_x")[last] << ", F_N "
-              << norm(s, "force", last) << std::endl;
+              << Testing::contact_norm(s, "force", last) << std::endl;
     out << "mu_c = 0: no friction force; the top's reaction along x is the "
            "x-part of the normal force (1e-6 |F_N|): "
         << Testing::yes_no(
-             norm(s, "friction", last) == 0. &&
+             Testing::contact_norm(s, "friction", last) == 0. &&
              std::abs(s.at("F2_x")[last] - s.at("contact1_force_x")[last]) <
-               1e-6 * norm(s, "force", last))
+               1e-6 * Testing::contact_norm(s, "force", last))
         << std::endl;
   }
   {

@@ -21,18 +21,6 @@
 
 using namespace dealii;
 
-namespace
-{
-  double
-  norm(const Testing::Table &s, const std::string &what, const std::size_t n)
-  {
-    double sum = 0;
-    for (const char *c : {"_x", "_y", "_z"})
-      sum += std::pow(s.at("contact1_" + what + c)[n], 2);
-    return std::sqrt(sum);
-  }
-} // namespace
-
 int
 main(int argc, char **argv)
 {
@@ -74,23 +62,22 @@ end
 )";
   const auto        s    = Testing::run_scene(prm, "ironing");
   const std::size_t last = s.at("time").size() - 1;
-  bool              all_slip = true, coulomb = true, smooth = true,
-       ploughing = true, tight = true;
+  bool all_slip = true, coulomb = true, smooth = true, ploughing = true,
+       tight        = true;
   double first_drag = 0;
   for (std::size_t n = 1; n <= last; ++n)
     {
       if (s.at("time")[n] < 1.15)
         continue;
       const double drag = s.at("F2_x")[n], normal = -s.at("F2_y")[n];
-      all_slip = all_slip && s.at("contact1_active_nodes")[n] > 0 &&
-                 s.at("contact1_slipping_nodes")[n] ==
-                   s.at("contact1_active_nodes")[n];
-      coulomb =
-        coulomb &&
-        std::abs(norm(s, "friction", n) / norm(s, "force", n) - 0.3) < 0.3e-6;
-      ploughing =
-        ploughing && drag / normal >= 0.3 && drag / normal <= 0.33;
-      tight = tight && s.at("contact1_max_penetration")[n] < 1e-6 * 0.002;
+      all_slip =
+        all_slip && s.at("contact1_active_nodes")[n] > 0 &&
+        s.at("contact1_slipping_nodes")[n] == s.at("contact1_active_nodes")[n];
+      coulomb   = coulomb && std::abs(Testing::contact_norm(s, "friction", n) /
+                                      Testing::contact_norm(s, "force", n) -
+                                    0.3) < 0.3e-6;
+      ploughing = ploughing && drag / normal >= 0.3 && drag / normal <= 0.33;
+      tight     = tight && s.at("contact1_max_penetration")[n] < 1e-6 * 0.002;
       if (s.at("time")[n - 1] >= 1.15)
         smooth =
           smooth &&
@@ -103,7 +90,7 @@ end
                 << s.at("contact1_slipping_nodes")[n] << " of "
                 << s.at("contact1_active_nodes")[n] << std::endl;
     }
-  const double work = s.at("external_work")[last];
+  const double work    = s.at("external_work")[last];
   const double balance = std::abs(s.at("energy_residual")[last]) / work;
   std::cout << "energy residual / work " << balance << std::endl;
   out << "sliding: every node in contact slips: " << Testing::yes_no(all_slip)

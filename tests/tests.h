@@ -13,6 +13,7 @@
 #include <ductile_contact/materials/plasticity.h>
 #include <ductile_contact/output/tee_stream.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -137,6 +138,17 @@ subsection Contact pair 1
            std::to_string(slave) +
            "\n  set Master boundary id = " + std::to_string(master) + "\n" +
            pair_entries + "end\n";
+  }
+
+  /// Length of the vector statistics columns contact1_<what>_x/y/z in row
+  /// @p n (what = force or friction).
+  inline double
+  contact_norm(const Table &s, const std::string &what, const std::size_t n)
+  {
+    double sum = 0;
+    for (const char *c : {"_x", "_y", "_z"})
+      sum += std::pow(s.at("contact1_" + what + c)[n], 2);
+    return std::sqrt(sum);
   }
 
   /**

@@ -1,5 +1,6 @@
 """Shared by the mesh generators: writes hexahedral meshes as Gmsh 2.2 ASCII
-files, the format the 'gmsh' scene reads (deal.II GridIn::read_msh).
+files, the format the 'gmsh' scene reads (deal.II GridIn::read_msh), and
+meshes plane-strain bodies column by column (column_body).
 
 nodes: list of (x, y, z), numbered from 1 in list order.
 elements: list of (gmsh_type, physical_tag, [node numbers]); type 5 is an
@@ -9,7 +10,7 @@ names: list of (dimension, tag, name) for the $PhysicalNames block.
 """
 
 
-def write_gmsh(path, names, nodes, elements):
+def write_gmsh(path, names, nodes, elements, digits=17):
     with open(path, "w") as f:
         f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
         f.write(f"$PhysicalNames\n{len(names)}\n")
@@ -18,9 +19,43 @@ def write_gmsh(path, names, nodes, elements):
         f.write("$EndPhysicalNames\n")
         f.write(f"$Nodes\n{len(nodes)}\n")
         for i, (x, y, z) in enumerate(nodes, start=1):
-            f.write(f"{i} {x:.17g} {y:.17g} {z:.17g}\n")
+            f.write(f"{i} {x:.{digits}g} {y:.{digits}g} {z:.{digits}g}\n")
         f.write("$EndNodes\n")
         f.write(f"$Elements\n{len(elements)}\n")
         for e, (etype, tag, v) in enumerate(elements, start=1):
             f.write(f"{e} {etype} 2 {tag} {tag} " + " ".join(map(str, v)) + "\n")
         f.write("$EndElements\n")
+
+
+def column_body(nodes, elements, xs, levels, zs, volume, faces):
+    """Appends one body of a plane-strain slab (one element layer between
+    zs[0] and zs[1]) meshed by the columns xs and the curves levels[j](x)
+    (bottom to top): nodes and hexahedra with volume tag `volume`, and the
+    boundary quadrilaterals with the tags faces["z"] (both slab faces),
+    faces["bottom"], faces["top"], faces["left"] (x = xs[0]) and
+    faces["right"] (x = xs[-1])."""
+    first = len(nodes) + 1
+    nx, ny = len(xs), len(levels)
+
+    def nid(i, j, k):
+        return first + i + nx * (j + ny * k)
+
+    for k in range(2):
+        for j in range(ny):
+            for i in range(nx):
+                nodes.append((xs[i], levels[j](xs[i]), zs[k]))
+    for j in range(ny - 1):
+        for i in range(nx - 1):
+            v = [nid(i, j, 0), nid(i + 1, j, 0), nid(i + 1, j + 1, 0), nid(i, j + 1, 0),
+                 nid(i, j, 1), nid(i + 1, j, 1), nid(i + 1, j + 1, 1), nid(i, j + 1, 1)]
+            elements.append((5, volume, v))
+            elements.append((3, faces["z"], v[:4]))
+            elements.append((3, faces["z"], v[4:]))
+            if j == 0:
+                elements.append((3, faces["bottom"], [v[0], v[1], v[5], v[4]]))
+            if j == ny - 2:
+                elements.append((3, faces["top"], [v[3], v[2], v[6], v[7]]))
+            if i == 0:
+                elements.append((3, faces["left"], [v[0], v[3], v[7], v[4]]))
+            if i == nx - 2:
+                elements.append((3, faces["right"], [v[1], v[2], v[6], v[5]]))

@@ -22,6 +22,8 @@ Usage: make_hertz.py R A H_OVER_A W OUTPUT.msh
 import math
 import sys
 
+from gmsh_writer import column_body, write_gmsh
+
 R = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0
 a = float(sys.argv[2]) if len(sys.argv) > 2 else 0.01
 ratio = float(sys.argv[3]) if len(sys.argv) > 3 else 8
@@ -55,31 +57,8 @@ nodes, elements = [], []
 
 
 def body(levels, volume, bottom_tag, top_tag):
-    first = len(nodes) + 1
-    nx, ny = len(xs), len(levels)
-
-    def nid(i, j, k):
-        return first + i + nx * (j + ny * k)
-
-    for k in range(2):
-        for j in range(ny):
-            for i in range(nx):
-                nodes.append((xs[i], levels[j](xs[i]), zs[k]))
-    for j in range(ny - 1):
-        for i in range(nx - 1):
-            v = [nid(i, j, 0), nid(i + 1, j, 0), nid(i + 1, j + 1, 0), nid(i, j + 1, 0),
-                 nid(i, j, 1), nid(i + 1, j, 1), nid(i + 1, j + 1, 1), nid(i, j + 1, 1)]
-            elements.append((5, volume, v))
-            elements.append((3, 6, v[:4]))
-            elements.append((3, 6, v[4:]))
-            if j == 0:
-                elements.append((3, bottom_tag, [v[0], v[1], v[5], v[4]]))
-            if j == ny - 2:
-                elements.append((3, top_tag, [v[3], v[2], v[6], v[7]]))
-            if i == 0:
-                elements.append((3, 5, [v[0], v[3], v[7], v[4]]))
-            if i == nx - 2:
-                elements.append((3, 7, [v[1], v[2], v[6], v[5]]))
+    column_body(nodes, elements, xs, levels, zs, volume,
+                dict(z=6, bottom=bottom_tag, top=top_tag, left=5, right=7))
 
 
 # Foundation: levels from y = -H up to 0.
@@ -93,19 +72,10 @@ def surface(x):
 
 body([(lambda x, d=d: surface(x) + d * (1 - surface(x) / H)) for d in ds], 2, 4, 2)
 
-with open(out, "w") as f:
-    f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
-    f.write("$PhysicalNames\n9\n2 1 \"foundation bottom\"\n2 2 \"indenter top\"\n"
-            "2 3 \"foundation top\"\n2 4 \"indenter surface\"\n2 5 \"symmetry\"\n"
-            "2 6 \"slab faces\"\n2 7 \"outer\"\n3 1 \"foundation\"\n3 2 \"indenter\"\n"
-            "$EndPhysicalNames\n")
-    f.write(f"$Nodes\n{len(nodes)}\n")
-    for i, (x, y, z) in enumerate(nodes, start=1):
-        f.write(f"{i} {x:.17g} {y:.17g} {z:.17g}\n")
-    f.write("$EndNodes\n")
-    f.write(f"$Elements\n{len(elements)}\n")
-    for e, (etype, tag, v) in enumerate(elements, start=1):
-        f.write(f"{e} {etype} 2 {tag} {tag} " + " ".join(map(str, v)) + "\n")
-    f.write("$EndElements\n")
+write_gmsh(out,
+           [(2, 1, "foundation bottom"), (2, 2, "indenter top"), (2, 3, "foundation top"),
+            (2, 4, "indenter surface"), (2, 5, "symmetry"), (2, 6, "slab faces"),
+            (2, 7, "outer"), (3, 1, "foundation"), (3, 2, "indenter")],
+           nodes, elements)
 print(f"{out}: {len(xs) - 1} x {2 * (len(ds) - 1)} hexahedra (h = {h:g} m, "
       f"R = {R}, a = {a}, W = H = {W})")

@@ -20,7 +20,7 @@ Usage: make_ironing.py H_SLAB H_DIE OUTPUT.msh
 import math
 import sys
 
-from gmsh_writer import write_gmsh
+from gmsh_writer import column_body, write_gmsh
 
 h_slab = float(sys.argv[1]) if len(sys.argv) > 1 else 0.001
 h_die = float(sys.argv[2]) if len(sys.argv) > 2 else 0.002
@@ -36,32 +36,8 @@ def divide(a, b, h):
 
 
 def body(xs, levels, volume, bottom_tag, top_tag):
-    """Hexahedra between the columns xs and the curves levels[j](x)."""
-    first = len(nodes) + 1
-    nx, ny = len(xs), len(levels)
-
-    def nid(i, j, k):
-        return first + i + nx * (j + ny * k)
-
-    for k in range(2):
-        for j in range(ny):
-            for i in range(nx):
-                nodes.append((xs[i], levels[j](xs[i]), zs[k]))
-    for j in range(ny - 1):
-        for i in range(nx - 1):
-            v = [nid(i, j, 0), nid(i + 1, j, 0), nid(i + 1, j + 1, 0), nid(i, j + 1, 0),
-                 nid(i, j, 1), nid(i + 1, j, 1), nid(i + 1, j + 1, 1), nid(i, j + 1, 1)]
-            elements.append((5, volume, v))
-            elements.append((3, 5, v[:4]))
-            elements.append((3, 5, v[4:]))
-            if j == 0:
-                elements.append((3, bottom_tag, [v[0], v[1], v[5], v[4]]))
-            if j == ny - 2:
-                elements.append((3, top_tag, [v[3], v[2], v[6], v[7]]))
-            if i == 0:
-                elements.append((3, 6, [v[0], v[3], v[7], v[4]]))
-            if i == nx - 2:
-                elements.append((3, 6, [v[1], v[2], v[6], v[5]]))
+    column_body(nodes, elements, xs, levels, zs, volume,
+                dict(z=5, bottom=bottom_tag, top=top_tag, left=6, right=6))
 
 
 # Slab: levels from y = -D up to 0.

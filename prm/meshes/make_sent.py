@@ -22,6 +22,8 @@ Usage: make_sent.py H BAND OUTPUT.msh [XEND]
 """
 import sys
 
+from gmsh_writer import write_gmsh
+
 h = float(sys.argv[1]) if len(sys.argv) > 1 else 0.0075
 band = float(sys.argv[2]) if len(sys.argv) > 2 else 0.05
 out = sys.argv[3] if len(sys.argv) > 3 else "sent.msh"
@@ -112,18 +114,10 @@ for j in range(ny - 1):
             if j == j_slit - 1:
                 elements.append((3, 4, [v[3], v[2], v[6], v[7]]))
 
-with open(out, "w") as f:
-    f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
-    f.write('$PhysicalNames\n5\n2 1 "bottom"\n2 2 "top"\n2 3 "slab faces"\n'
-            '2 4 "free edges and slit"\n3 1 "specimen"\n$EndPhysicalNames\n')
-    f.write(f"$Nodes\n{len(nodes)}\n")
-    for n, (x, y, z) in enumerate(nodes, start=1):
-        f.write(f"{n} {x:.15g} {y:.15g} {z:.15g}\n")
-    f.write("$EndNodes\n")
-    f.write(f"$Elements\n{len(elements)}\n")
-    for e, (etype, tag, v) in enumerate(elements, start=1):
-        f.write(f"{e} {etype} 2 {tag} {tag} " + " ".join(map(str, v)) + "\n")
-    f.write("$EndElements\n")
+write_gmsh(out,
+           [(2, 1, "bottom"), (2, 2, "top"), (2, 3, "slab faces"),
+            (2, 4, "free edges and slit"), (3, 1, "specimen")],
+           nodes, elements, digits=15)
 print(f"{out}: {len([e for e in elements if e[0] == 5])} hexahedra, "
       f"{len(nodes)} nodes, h = {h} mm for {0.5 - band} <= x <= {x_end}, "
       f"|y - 0.5| <= {band}")

@@ -16,7 +16,11 @@ upper body's, 7 the other side faces.
 Usage: make_contact_patch.py N_LOW N_UP ANGLE OUTPUT.msh
 """
 import math
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "prm", "meshes"))
+from gmsh_writer import write_gmsh  # noqa: E402
 
 n_low = int(sys.argv[1]) if len(sys.argv) > 1 else 3
 n_up = int(sys.argv[2]) if len(sys.argv) > 2 else 4
@@ -72,19 +76,10 @@ def block(n, z0, degrees, volume_tag, top_tag, bottom_tag, x0_tag, y0_tag):
 block(n_low, 0.0, angle, 1, 3, 1, 5, 6)
 block(n_up, 1.0, -angle, 2, 2, 4, 8, 9)
 
-with open(out, "w") as f:
-    f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n")
-    f.write("$PhysicalNames\n11\n2 1 \"bottom\"\n2 2 \"top\"\n2 3 \"master\"\n"
-            "2 4 \"slave\"\n2 5 \"x0 lower\"\n2 6 \"y0 lower\"\n2 7 \"free\"\n"
-            "2 8 \"x0 upper\"\n2 9 \"y0 upper\"\n"
-            "3 1 \"lower\"\n3 2 \"upper\"\n$EndPhysicalNames\n")
-    f.write(f"$Nodes\n{len(nodes)}\n")
-    for i, (x, y, z) in enumerate(nodes, start=1):
-        f.write(f"{i} {x:.17g} {y:.17g} {z:.17g}\n")
-    f.write("$EndNodes\n")
-    f.write(f"$Elements\n{len(elements)}\n")
-    for e, (etype, tag, v) in enumerate(elements, start=1):
-        f.write(f"{e} {etype} 2 {tag} {tag} " + " ".join(map(str, v)) + "\n")
-    f.write("$EndElements\n")
+write_gmsh(out,
+           [(2, 1, "bottom"), (2, 2, "top"), (2, 3, "master"), (2, 4, "slave"),
+            (2, 5, "x0 lower"), (2, 6, "y0 lower"), (2, 7, "free"), (2, 8, "x0 upper"),
+            (2, 9, "y0 upper"), (3, 1, "lower"), (3, 2, "upper")],
+           nodes, elements)
 print(f"{out}: lower {n_low}x{n_low}x2, upper {n_up}x{n_up}x2 cells, "
       f"swirl {angle} degrees")

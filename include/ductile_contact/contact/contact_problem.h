@@ -86,8 +86,10 @@ namespace DuctileContact
    * rank integrates all pairs (work O(contact faces) per rank) and
    * assembles the rows of the slave nodes whose DoFs it owns, which touch
    * master rows owned by other ranks: those are added through the
-   * distributed matrix and vectors (compress(add)). Results are the same on
-   * any number of ranks up to round-off.
+   * distributed matrix and vectors (compress(add)). The derivatives of D
+   * and M (the expensive part of a tangent assembly) are computed only for
+   * the face pairs that touch an active slave node the rank owns. Results
+   * are the same on any number of ranks up to round-off.
    */
   class ContactProblem
   {
