@@ -65,10 +65,10 @@ end
         const double          lambda = 1. + 0.02 * stats.at("time")[n];
         const PlasticResponse r =
           Testing::uniaxial_plastic_step(lambda, h, stats.at("dt")[n], p);
-        h            = r.updated;
+        h                 = r.updated;
         const double P_xx = r.tau[0][0] / lambda;
-        worst = std::max(worst, std::abs(stats.at("F1_x")[n] - P_xx) /
-                                  std::abs(P_xx));
+        worst             = std::max(worst,
+                         std::abs(stats.at("F1_x")[n] - P_xx) / std::abs(P_xx));
       }
     return worst;
   }
@@ -169,8 +169,8 @@ main(int argc, char **argv)
       cutbacks += c;
     const double worst = worst_force_error(stats, p);
     std::cout << "cut-back run: " << cutbacks << " cut-backs, "
-              << stats.at("time").size() - 1 << " steps, worst force "
-              << worst << std::endl;
+              << stats.at("time").size() - 1 << " steps, worst force " << worst
+              << std::endl;
     out << "steps cut back: " << Testing::yes_no(cutbacks > 0)
         << "; the accepted steps match the driver stepped with them alone "
            "(1e-6): "

@@ -309,6 +309,7 @@ namespace DuctileContact
               statistics.add(name + "_friction_" + xyz[d], c.friction_force[d]);
             statistics.add(name + "_sticking_nodes", c.sticking_nodes);
             statistics.add(name + "_slipping_nodes", c.slipping_nodes);
+            statistics.add(name + "_max_slip", c.max_slip);
             statistics.add(name + "_dissipation", c.dissipation);
           }
         statistics.add("contact_augmentations", report.augmentations);

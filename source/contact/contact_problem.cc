@@ -374,6 +374,8 @@ namespace DuctileContact
             summary.min_pressure =
               std::min(summary.min_pressure, state.pressure);
           }
+        if (state.pressure > 0.)
+          summary.max_slip = std::max(summary.max_slip, state.slip.norm());
         if (state.friction_state == 1)
           ++summary.sticking_nodes;
         if (state.friction_state == 2)
@@ -688,12 +690,16 @@ namespace DuctileContact
             nodal.pressure.push_back(pair.nodal[j].pressure);
             nodal.normal.push_back(a.normal);
             nodal.active.push_back(pair.nodal[j].active);
+            nodal.slip.push_back(pair.nodal[j].slip);
+            nodal.traction.push_back(pair.nodal[j].traction);
             nodal.gap.push_back(a.area > 0. ? pair.nodal[j].gap / a.area : 0.);
           }
         // Before the first assembly (step 0) nothing is computed yet.
         const std::size_t n = pair.slave.nodes.size();
         nodal.pressure.resize(n, 0.);
         nodal.normal.resize(n);
+        nodal.slip.resize(n);
+        nodal.traction.resize(n);
         nodal.active.resize(n, false);
         nodal.gap.resize(n, 0.);
         write_contact_surface(nodal,

@@ -21,13 +21,15 @@ namespace DuctileContact
 
     {
       std::ofstream table(directory + "/" + base + ".txt");
-      table << "X Y Z x y z pressure gap active\n" << std::setprecision(12);
+      table << "X Y Z x y z pressure gap active slip_x slip_y slip_z "
+               "traction_x traction_y traction_z\n"
+            << std::setprecision(12);
       for (unsigned int j = 0; j < surface.nodes.size(); ++j)
         {
           const auto &n = surface.nodes[j];
           table << n.reference << ' ' << n.current << ' ' << data.pressure[j]
-                << ' ' << data.gap[j] << ' ' << (data.active[j] ? 1 : 0)
-                << '\n';
+                << ' ' << data.gap[j] << ' ' << (data.active[j] ? 1 : 0) << ' '
+                << data.slip[j] << ' ' << data.traction[j] << '\n';
         }
     }
 
@@ -73,11 +75,17 @@ namespace DuctileContact
       scalar("pressure", data.pressure);
       scalar("gap", data.gap);
       scalar("active", data.active);
-      vtu << "<DataArray type=\"Float64\" Name=\"normal\" "
-             "NumberOfComponents=\"3\" format=\"ascii\">\n";
-      for (const auto &n : data.normal)
-        vtu << n << '\n';
-      vtu << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n"
+      const auto vector = [&](const char *field, const auto &values) {
+        vtu << "<DataArray type=\"Float64\" Name=\"" << field
+            << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+        for (const auto &v : values)
+          vtu << v << '\n';
+        vtu << "</DataArray>\n";
+      };
+      vector("normal", data.normal);
+      vector("slip", data.slip);
+      vector("traction", data.traction);
+      vtu << "</PointData>\n</Piece>\n</UnstructuredGrid>\n"
           << "</VTKFile>\n";
     }
 

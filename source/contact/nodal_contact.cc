@@ -38,6 +38,10 @@ namespace DuctileContact
     if (!state.active)
       return state;
 
+    const double Hn = dot(n, H).val();
+    for (unsigned int c = 0; c < dim; ++c)
+      state.slip[c] = (a.H[c] - Hn * a.normal[c]) / a.area;
+
     // f = lambda n + t; lambda = trial on the active branch (its value is
     // clipped at 0 for a node that only touches).
     V f;

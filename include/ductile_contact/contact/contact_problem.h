@@ -39,6 +39,8 @@ namespace DuctileContact
     /// Friction force the slave exerts on the master, sum of A_j t_T,j [N].
     dealii::Tensor<1, dim> friction_force;
     unsigned int           sticking_nodes = 0, slipping_nodes = 0;
+    /// Largest slip |s_j| of a node in contact in this step [m].
+    double max_slip = 0.;
     /// Frictional dissipation (47) up to this state [J].
     double dissipation = 0.;
   };

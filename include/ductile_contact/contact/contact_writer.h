@@ -17,6 +17,8 @@ namespace DuctileContact
     std::vector<double>                 pressure; ///< lambda_j [Pa]
     std::vector<double>                 gap;      ///< g_j / A_j [m]
     std::vector<dealii::Tensor<1, dim>> normal;
+    /// Slip since the last accepted step [m] and tangential traction [Pa].
+    std::vector<dealii::Tensor<1, dim>> slip, traction;
     std::vector<bool>                   active;
   };
 
@@ -25,9 +27,11 @@ namespace DuctileContact
    * rank; the surface is replicated):
    *  - `<name>_NNNNN.vtu`: the deformed slave faces (VTK biquadratic quads)
    *    with point data pressure [Pa], gap [m] (negative: penetration),
-   *    normal, active; `<name>.pvd` lists every step written (ParaView);
+   *    active, and the vectors normal, slip [m] (of the step), traction
+   *    (tangential) [Pa]; `<name>.pvd` lists every step written (ParaView);
    *  - `<name>_NNNNN.txt`: one row per slave node, columns X Y Z (reference)
-   *    x y z (current) [m], pressure [Pa], gap [m], active (0/1), for
+   *    x y z (current) [m], pressure [Pa], gap [m], active (0/1), slip_x
+   *    slip_y slip_z [m], traction_x traction_y traction_z [Pa], for
    *    scripts.
    * @p records holds (time, vtu file) of the steps written so far.
    */

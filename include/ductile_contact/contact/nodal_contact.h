@@ -45,6 +45,9 @@ namespace DuctileContact
     /// (stick) or 2 (slip).
     dealii::Tensor<1, dim> traction, trial_traction;
     unsigned char          friction_state = 0;
+    /// Slip of the slave relative to the master since the last accepted
+    /// step, s_j = (I - n_j n_j) H_j / A_j [m].
+    dealii::Tensor<1, dim> slip;
     /// A_j t_j . (slip_j - (t_j - t_old) / eps_T), (47) [J].
     double dissipation = 0.;
     /// The traction f_j = lambda_j n_j + t_j the slave node j transmits:
