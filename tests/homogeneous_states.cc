@@ -5,7 +5,8 @@
 //    faces: nominal stress P_xx (reaction on x+) and the lateral stretch
 //    (solved from tau_yy = 0 by bisection);
 //  - simple shear gamma = 0.5 (all faces prescribed): P_xy and P_yy from the
-//    reaction on y+;
+//    reaction on y+, and the displacement at two probe points (Output/Probe
+//    points: inside a cell and at a vertex of 8 cells);
 //  - volumetric expansion lambda = 1.2: P_xx from the reaction on x+;
 // and the stored energy Psi(F) V in each case. Agreement to 1e-8 relative.
 // Run on 1 and 2 MPI ranks with identical output.
@@ -112,14 +113,30 @@ main(int argc, char **argv)
     Tensor<2, dim> F         = unit_symmetric_tensor<dim>();
     F[0][1]                  = gamma;
     const MaterialResponse m = neo_hooke(F, mu, kappa, false);
-    const auto             t =
-      Testing::run_scene(cube_prm(all_faces("0.5*t*y; 0; 0"), "direct"),
-                         "simple_shear");
-    bool ok = true;
+    const auto t = Testing::run_scene(cube_prm(all_faces("0.5*t*y; 0; 0") + R"(
+subsection Output
+  set Probe points = 0.3, 0.7, 0.45; 0.5, 0.5, 0.5
+end
+)",
+                                               "direct"),
+                                      "simple_shear");
+    bool       ok = true;
     out << "simple shear gamma = 0.5:" << std::endl;
     report(out, "P_xy / mu", t.at("F3_x").back(), m.P[0][1], ok);
     report(out, "P_yy / mu", t.at("F3_y").back(), m.P[1][1], ok);
     report(out, "stored energy / mu", t.at("stored_energy").back(), m.psi, ok);
+    report(out,
+           "u_x at probe (0.3, 0.7, 0.45)",
+           t.at("probe1_u_x").back(),
+           0.35,
+           ok);
+    report(out,
+           "u_x at probe (0.5, 0.5, 0.5), a vertex of 8 cells",
+           t.at("probe2_u_x").back(),
+           0.25,
+           ok);
+    ok = ok && std::abs(t.at("probe1_u_y").back()) < 1e-10 &&
+         std::abs(t.at("probe2_u_z").back()) < 1e-10;
     out << "  matches (1e-8): " << Testing::yes_no(ok) << std::endl;
   }
 

@@ -5,6 +5,7 @@
 #include <ductile_contact/app/simulation.h>
 #include <ductile_contact/core/input_error.h>
 #include <ductile_contact/mesh/scene.h>
+#include <ductile_contact/output/probe_points.h>
 #include <ductile_contact/output/tee_stream.h>
 
 #include <cctype>
@@ -112,6 +113,7 @@ namespace DuctileContact
                     "the id of a boundary of the mesh of scene '" +
                       parameters.mesh.scene + "' (it has " + join(boundaries) +
                       ")");
+    ProbePoints::check_inside(tria, parameters.output.probe_points);
     if (!parameters.contact_pairs.empty())
       check_input(parameters.fe_degree == 2,
                   "Finite elements/Polynomial degree",

@@ -60,6 +60,8 @@ namespace DuctileContact
                                                         parameters.fe_degree,
                                                         fields);
       discretisation->setup();
+      probes = std::make_unique<ProbePoints>(parameters.output.probe_points);
+      probes->setup(*discretisation);
     }
 
     // Force scale of the absolute Newton tolerance: mu_max * diameter^2.
@@ -262,6 +264,11 @@ namespace DuctileContact
           }
       }
     const double stored_energy = committed.stored_energy;
+    const auto   probe_values  = probes->evaluate(u_ghosted);
+    for (unsigned int k = 0; k < probe_values.size(); ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        statistics.add("probe" + std::to_string(k + 1) + "_u_" + xyz[d],
+                       probe_values[k][d]);
     statistics.add("stored_energy", stored_energy);
     statistics.add("external_work", external_work);
     bool plastic = false, cracking = false;

@@ -26,14 +26,44 @@ namespace DuctileContact
                       "0: quiet; 1: one line per load step; 2: also the "
                       "Newton residuals and linear iterations.",
                       Patterns::Integer(0, 2));
+    prm.add_parameter(
+      "Probe points",
+      probe_points_text,
+      "Material points (reference coordinates x, y, z [m], points separated "
+      "by ';') whose displacement goes to the statistics columns "
+      "probe<k>_u_x/y/z [m], k = 1, 2, ... in the order given; empty: "
+      "none.",
+      Patterns::Anything());
     prm.leave_subsection();
   }
 
 
 
   void
-  OutputParameters::check() const
+  OutputParameters::check()
   {
+    probe_points.clear();
+    for (const std::string &text :
+         Utilities::split_string_list(probe_points_text, ';'))
+      {
+        const auto coordinates = Utilities::split_string_list(text, ',');
+        Point<dim> p;
+        bool       valid = coordinates.size() == dim;
+        for (unsigned int d = 0; valid && d < dim; ++d)
+          try
+            {
+              p[d] = Utilities::string_to_double(coordinates[d]);
+            }
+          catch (...)
+            {
+              valid = false;
+            }
+        check_input(valid,
+                    "Output/Probe points",
+                    text,
+                    "points of three coordinates x, y, z separated by ';'");
+        probe_points.push_back(p);
+      }
     check_input(!directory.empty(),
                 "Output/Directory",
                 directory,

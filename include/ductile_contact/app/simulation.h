@@ -7,6 +7,7 @@
 
 #include <ductile_contact/app/run_parameters.h>
 #include <ductile_contact/discretisation/discretisation.h>
+#include <ductile_contact/output/probe_points.h>
 #include <ductile_contact/output/statistics.h>
 #include <ductile_contact/output/tee_stream.h>
 #include <ductile_contact/solver/quadrature_history.h>
@@ -87,6 +88,7 @@ namespace DuctileContact
     std::unique_ptr<SystemAssembler>                             assembler;
     std::unique_ptr<LinearSolver>                                linear_solver;
     std::unique_ptr<ContactProblem>                              contact;
+    std::unique_ptr<ProbePoints>                                 probes;
     std::unique_ptr<NewtonSolver>                                newton;
     std::unique_ptr<SolutionWriter>                              writer;
     Statistics                                                   statistics;

@@ -1,0 +1,136 @@
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/vector.h>
+
+#include <ductile_contact/core/input_error.h>
+#include <ductile_contact/output/probe_points.h>
+
+#include <limits>
+#include <sstream>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  ProbePoints::ProbePoints(const std::vector<Point<dim>> &points)
+    : points(points)
+  {}
+
+
+
+  namespace
+  {
+    void
+    refuse_outside(const Point<dim> &p)
+    {
+      std::ostringstream text;
+      text << p;
+      throw InputError("Output/Probe points",
+                       text.str(),
+                       "points inside the mesh (reference configuration)");
+    }
+  } // namespace
+
+
+
+  void
+  ProbePoints::check_inside(const Triangulation<dim>      &tria,
+                            const std::vector<Point<dim>> &points)
+  {
+    const MPI_Comm comm = tria.get_communicator();
+    for (const Point<dim> &p : points)
+      {
+        unsigned int found = 0;
+        try
+          {
+            const auto [cell, unit] =
+              GridTools::find_active_cell_around_point(MappingQ1<dim>(),
+                                                       tria,
+                                                       p);
+            found = cell.state() == IteratorState::valid &&
+                    cell->is_locally_owned();
+          }
+        catch (...)
+          {
+            // not in this rank's part of the mesh
+          }
+        if (Utilities::MPI::max(found, comm) == 0)
+          refuse_outside(p);
+      }
+  }
+
+
+
+  void
+  ProbePoints::setup(const Discretisation &d)
+  {
+    discretisation = &d;
+    locations.assign(points.size(), Location());
+    const MPI_Comm     comm = d.dof_handler.get_communicator();
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        // Which rank owns a cell that contains the point: the lowest one.
+        unsigned int owner = std::numeric_limits<unsigned int>::max();
+        Location     found;
+        try
+          {
+            const auto [cell, unit] = GridTools::find_active_cell_around_point(
+              d.mapping, d.dof_handler, points[k]);
+            if (cell.state() == IteratorState::valid &&
+                cell->is_locally_owned())
+              {
+                owner            = rank;
+                found.here       = true;
+                found.cell       = cell;
+                found.unit_point = GeometryInfo<dim>::project_to_unit_cell(unit);
+              }
+          }
+        catch (...)
+          {
+            // not in this rank's part of the mesh
+          }
+        const unsigned int lowest = Utilities::MPI::min(owner, comm);
+        if (lowest == std::numeric_limits<unsigned int>::max())
+          refuse_outside(points[k]);
+        if (lowest == rank)
+          locations[k] = found;
+      }
+  }
+
+
+
+  std::vector<Tensor<1, dim>>
+  ProbePoints::evaluate(const TrilinosWrappers::MPI::BlockVector &u) const
+  {
+    std::vector<double> values(dim * points.size(), 0.);
+    Vector<double>      local;
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        const Location &at = locations[k];
+        if (!at.here)
+          continue;
+        const auto &fe = at.cell->get_fe();
+        local.reinit(fe.n_dofs_per_cell());
+        at.cell->get_dof_values(u, local);
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            if (c < dim)
+              values[dim * k + c] +=
+                local[i] * fe.shape_value_component(i, at.unit_point, c);
+          }
+      }
+    const std::vector<double> mine = values;
+    Utilities::MPI::sum(make_array_view(mine),
+                        discretisation->dof_handler.get_communicator(),
+                        make_array_view(values));
+    std::vector<Tensor<1, dim>> result(points.size());
+    for (unsigned int k = 0; k < points.size(); ++k)
+      for (unsigned int c = 0; c < dim; ++c)
+        result[k][c] = values[dim * k + c];
+    return result;
+  }
+} // namespace DuctileContact
