@@ -15,8 +15,9 @@ namespace DuctileContact
   using namespace dealii;
 
   ProbePoints::ProbePoints(const std::vector<Point<dim>> &points)
-    : points(points)
-  {}
+      : points(points)
+  {
+  }
 
 
 
@@ -49,8 +50,8 @@ namespace DuctileContact
               GridTools::find_active_cell_around_point(MappingQ1<dim>(),
                                                        tria,
                                                        p);
-            found = cell.state() == IteratorState::valid &&
-                    cell->is_locally_owned();
+            found =
+              cell.state() == IteratorState::valid && cell->is_locally_owned();
           }
         catch (...)
           {
@@ -77,15 +78,18 @@ namespace DuctileContact
         Location     found;
         try
           {
-            const auto [cell, unit] = GridTools::find_active_cell_around_point(
-              d.mapping, d.dof_handler, points[k]);
+            const auto [cell, unit] =
+              GridTools::find_active_cell_around_point(d.mapping,
+                                                       d.dof_handler,
+                                                       points[k]);
             if (cell.state() == IteratorState::valid &&
                 cell->is_locally_owned())
               {
-                owner            = rank;
-                found.here       = true;
-                found.cell       = cell;
-                found.unit_point = GeometryInfo<dim>::project_to_unit_cell(unit);
+                owner      = rank;
+                found.here = true;
+                found.cell = cell;
+                found.unit_point =
+                  GeometryInfo<dim>::project_to_unit_cell(unit);
               }
           }
         catch (...)

@@ -29,7 +29,7 @@ namespace DuctileContact
     /// lies outside @p tria (its cells with straight edges); for
     /// --validate, on the coarse mesh.
     static void
-    check_inside(const dealii::Triangulation<dim>       &tria,
+    check_inside(const dealii::Triangulation<dim>      &tria,
                  const std::vector<dealii::Point<dim>> &points);
 
     /// Locates the points; throws InputError naming Output/Probe points if
@@ -50,7 +50,7 @@ namespace DuctileContact
   private:
     struct Location
     {
-      bool                                         here = false;
+      bool                                          here = false;
       dealii::DoFHandler<dim>::active_cell_iterator cell;
       dealii::Point<dim>                            unit_point;
     };
