@@ -221,6 +221,16 @@ namespace DuctileContact
 
 
 
+  types::global_dof_index
+  ContactProblem::coordinate_dof(const Pair &pair, const unsigned int key)
+  {
+    const unsigned int node = key / 3, ns = pair.slave.nodes.size();
+    return node < ns ? pair.slave.nodes[node].dofs[key % 3]
+                     : pair.master.nodes[node - ns].dofs[key % 3];
+  }
+
+
+
   void
   ContactProblem::coupled_nodes(const Pair                &pair,
                                 const unsigned int         j,
@@ -427,9 +437,7 @@ namespace DuctileContact
           {
             keys[a]    = a < 27 ? 3 * s_nodes[a / 3] + a % 3
                                 : 3 * (ns + m_nodes[(a - 27) / 3]) + a % 3;
-            indices[a] = a < 27
-                           ? slave.nodes[s_nodes[a / 3]].dofs[a % 3]
-                           : master.nodes[m_nodes[(a - 27) / 3]].dofs[a % 3];
+            indices[a] = coordinate_dof(pair, keys[a]);
           }
         matrix = 0.;
         for (unsigned int i = 0; i < 9; ++i)
@@ -505,12 +513,6 @@ namespace DuctileContact
           needed[j] = pair.nodal[j].active &&
                       discretisation.locally_owned_dofs.is_element(
                         slave.nodes[j].dofs[0]);
-        const auto dof = [&](const unsigned int key) {
-          const unsigned int node = key / 3;
-          return node < ns ? slave.nodes[node].dofs[key % 3]
-                           : master.nodes[node - ns].dofs[key % 3];
-        };
-
         // d(aggregates)/dx: through D and M ...
         std::vector<std::map<unsigned int, std::array<double, 10>>> gradients(
           ns);
@@ -583,7 +585,7 @@ namespace DuctileContact
             for (auto &[key, position] : local)
               {
                 position = indices.size();
-                indices.push_back(dof(key));
+                indices.push_back(coordinate_dof(pair, key));
               }
             const unsigned int size = indices.size();
             matrix.reinit(size, size);

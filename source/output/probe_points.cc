@@ -32,6 +32,33 @@ namespace DuctileContact
                        text.str(),
                        "points inside the mesh (reference configuration)");
     }
+
+    /// A locally owned cell of @p mesh that contains @p p and the point's
+    /// coordinates in it; false if this rank owns none.
+    template <typename MappingType, typename MeshType>
+    bool
+    owned_cell_around(const MappingType                       &mapping,
+                      const MeshType                          &mesh,
+                      const Point<dim>                        &p,
+                      typename MeshType::active_cell_iterator &cell,
+                      Point<dim>                              &unit)
+    {
+      try
+        {
+          const auto found =
+            GridTools::find_active_cell_around_point(mapping, mesh, p);
+          if (found.first.state() != IteratorState::valid ||
+              !found.first->is_locally_owned())
+            return false;
+          cell = found.first;
+          unit = found.second;
+          return true;
+        }
+      catch (...)
+        {
+          return false; // not in this rank's part of the mesh
+        }
+    }
   } // namespace
 
 
@@ -40,24 +67,13 @@ namespace DuctileContact
   ProbePoints::check_inside(const Triangulation<dim>      &tria,
                             const std::vector<Point<dim>> &points)
   {
-    const MPI_Comm comm = tria.get_communicator();
     for (const Point<dim> &p : points)
       {
-        unsigned int found = 0;
-        try
-          {
-            const auto [cell, unit] =
-              GridTools::find_active_cell_around_point(MappingQ1<dim>(),
-                                                       tria,
-                                                       p);
-            found =
-              cell.state() == IteratorState::valid && cell->is_locally_owned();
-          }
-        catch (...)
-          {
-            // not in this rank's part of the mesh
-          }
-        if (Utilities::MPI::max(found, comm) == 0)
+        Triangulation<dim>::active_cell_iterator cell;
+        Point<dim>                               unit;
+        const unsigned int                       found =
+          owned_cell_around(MappingQ1<dim>(), tria, p, cell, unit);
+        if (Utilities::MPI::max(found, tria.get_communicator()) == 0)
           refuse_outside(p);
       }
   }
@@ -74,28 +90,13 @@ namespace DuctileContact
     for (unsigned int k = 0; k < points.size(); ++k)
       {
         // Which rank owns a cell that contains the point: the lowest one.
-        unsigned int owner = std::numeric_limits<unsigned int>::max();
-        Location     found;
-        try
-          {
-            const auto [cell, unit] =
-              GridTools::find_active_cell_around_point(d.mapping,
-                                                       d.dof_handler,
-                                                       points[k]);
-            if (cell.state() == IteratorState::valid &&
-                cell->is_locally_owned())
-              {
-                owner      = rank;
-                found.here = true;
-                found.cell = cell;
-                found.unit_point =
-                  GeometryInfo<dim>::project_to_unit_cell(unit);
-              }
-          }
-        catch (...)
-          {
-            // not in this rank's part of the mesh
-          }
+        Location   found;
+        Point<dim> unit;
+        found.here = owned_cell_around(
+          d.mapping, d.dof_handler, points[k], found.cell, unit);
+        found.unit_point = GeometryInfo<dim>::project_to_unit_cell(unit);
+        const unsigned int owner =
+          found.here ? rank : std::numeric_limits<unsigned int>::max();
         const unsigned int lowest = Utilities::MPI::min(owner, comm);
         if (lowest == std::numeric_limits<unsigned int>::max())
           refuse_outside(points[k]);

@@ -175,6 +175,26 @@ namespace DuctileContact
 
 
 
+  AssemblyInfo
+  NewtonSolver::assemble(const StepData                  &step,
+                         const AffineConstraints<double> &constraints,
+                         const AssemblyTargets           &targets)
+  {
+    const AssemblyInfo info =
+      assembler.assemble(u_ghosted, step, constraints, targets);
+    if (contact)
+      {
+        TimerOutput::Scope scope(timer,
+                                 targets.tangent
+                                   ? "contact: integration, tangent"
+                                   : "contact: integration, residual");
+        contact->assemble(u_ghosted, constraints, targets);
+      }
+    return info;
+  }
+
+
+
   double
   NewtonSolver::tangent_error(const StepData                           &step,
                               const TrilinosWrappers::MPI::BlockVector &u,
@@ -193,10 +213,7 @@ namespace DuctileContact
         TrilinosWrappers::MPI::BlockVector trial = u;
         trial.add(sign * e, delta);
         u_ghosted = trial;
-        const AssemblyTargets targets{nullptr, nullptr, &residual, nullptr};
-        assembler.assemble(u_ghosted, step, constraints, targets);
-        if (contact)
-          contact->assemble(u_ghosted, constraints, targets);
+        assemble(step, constraints, {nullptr, nullptr, &residual, nullptr});
         if (sign > 0.)
           difference = residual;
         else
@@ -408,13 +425,7 @@ namespace DuctileContact
                                         &newton_rhs,
                                         &residual,
                                         &internal_force};
-          report.info =
-            assembler.assemble(u_ghosted, step, constraints, targets);
-          if (contact)
-            {
-              TimerOutput::Scope scope(timer, "contact: integration, tangent");
-              contact->assemble(u_ghosted, constraints, targets);
-            }
+          report.info = assemble(step, constraints, targets);
         }
         const Norms  n     = block_norms();
         const double scale = internal_force.block(0).l2_norm();
@@ -473,14 +484,7 @@ namespace DuctileContact
                                             nullptr,
                                             &residual,
                                             &internal_force};
-              trial_info =
-                assembler.assemble(u_ghosted, step, constraints, targets);
-              if (contact)
-                {
-                  TimerOutput::Scope scope(timer,
-                                           "contact: integration, residual");
-                  contact->assemble(u_ghosted, constraints, targets);
-                }
+              trial_info  = assemble(step, constraints, targets);
               trial_n     = block_norms();
               trial_r     = merit(trial_n, tol);
               trial_scale = internal_force.block(0).l2_norm();

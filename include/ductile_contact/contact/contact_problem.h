@@ -210,6 +210,11 @@ namespace DuctileContact
       std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
       const;
 
+    /// The DoF of coordinate @p key = 3 node + c (master nodes numbered
+    /// after the slave nodes), the keys of linearise_operators().
+    static dealii::types::global_dof_index
+    coordinate_dof(const Pair &pair, const unsigned int key);
+
     /// The slave and master nodes that node @p j couples to.
     void
     coupled_nodes(const Pair                &pair,

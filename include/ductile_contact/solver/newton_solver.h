@@ -107,6 +107,13 @@ namespace DuctileContact
                   dealii::TrilinosWrappers::MPI::BlockVector &u,
                   dealii::TrilinosWrappers::MPI::BlockVector &internal_force);
 
+    /// Bulk and contact terms at u_ghosted into @p targets (the contact
+    /// under the timer "contact: integration, tangent" or ", residual").
+    AssemblyInfo
+    assemble(const StepData                          &step,
+             const dealii::AffineConstraints<double> &constraints,
+             const AssemblyTargets                   &targets);
+
     /// Newton/Check tangent: |K delta - (R(u + e delta) - R(u - e delta)) /
     /// 2e| / |K delta| on the free DoFs, e delta of 1e-6 the size of u; the
     /// tangent and delta of the current iteration, @p residual overwritten.
