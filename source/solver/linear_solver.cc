@@ -154,9 +154,14 @@ namespace DuctileContact
       }
     else
       {
+        // Right preconditioning, so that the stopping test is on the true
+        // residual ||b - A x|| (left preconditioning tests ||P^-1 (b - A x)||,
+        // which the AMG scales by ~1/E: the solve stopped far too early and
+        // Newton converged linearly).
         SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
           control,
-          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100));
+          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100,
+                                                                     true));
         gmres.solve(A, xu, bu, amg);
       }
     return control.last_step();
