@@ -1,6 +1,7 @@
 """Shared by the mesh generators: writes hexahedral meshes as Gmsh 2.2 ASCII
 files, the format the 'gmsh' scene reads (deal.II GridIn::read_msh), and
-meshes plane-strain bodies column by column (column_body).
+meshes plane-strain bodies column by column (column_body) and 3-D bodies
+over a grid of columns (block_body).
 
 nodes: list of (x, y, z), numbered from 1 in list order.
 elements: list of (gmsh_type, physical_tag, [node numbers]); type 5 is an
@@ -59,3 +60,41 @@ def column_body(nodes, elements, xs, levels, zs, volume, faces):
                 elements.append((3, faces["left"], [v[0], v[3], v[7], v[4]]))
             if i == nx - 2:
                 elements.append((3, faces["right"], [v[1], v[2], v[6], v[5]]))
+
+
+def block_body(nodes, elements, xs, ys, levels, volume, faces):
+    """Appends one 3-D body meshed by the columns over the grid xs x ys and
+    the surfaces levels[k](x, y) (bottom to top): nodes and hexahedra with
+    volume tag `volume`, and the boundary quadrilaterals with the tags
+    faces["bottom"], faces["top"], faces["x0"] (x = xs[0]), faces["x1"]
+    (x = xs[-1]), faces["y0"] and faces["y1"]. Faces are oriented with the
+    outward normal by the right-hand rule."""
+    first = len(nodes) + 1
+    nx, ny, nz = len(xs), len(ys), len(levels)
+
+    def nid(i, j, k):
+        return first + i + nx * (j + ny * k)
+
+    for k in range(nz):
+        for j in range(ny):
+            for i in range(nx):
+                nodes.append((xs[i], ys[j], levels[k](xs[i], ys[j])))
+    for k in range(nz - 1):
+        for j in range(ny - 1):
+            for i in range(nx - 1):
+                v = [nid(i, j, k), nid(i + 1, j, k), nid(i + 1, j + 1, k), nid(i, j + 1, k),
+                     nid(i, j, k + 1), nid(i + 1, j, k + 1), nid(i + 1, j + 1, k + 1),
+                     nid(i, j + 1, k + 1)]
+                elements.append((5, volume, v))
+                if k == 0:
+                    elements.append((3, faces["bottom"], [v[0], v[3], v[2], v[1]]))
+                if k == nz - 2:
+                    elements.append((3, faces["top"], v[4:]))
+                if i == 0:
+                    elements.append((3, faces["x0"], [v[0], v[4], v[7], v[3]]))
+                if i == nx - 2:
+                    elements.append((3, faces["x1"], [v[1], v[2], v[6], v[5]]))
+                if j == 0:
+                    elements.append((3, faces["y0"], [v[0], v[1], v[5], v[4]]))
+                if j == ny - 2:
+                    elements.append((3, faces["y1"], [v[3], v[7], v[6], v[2]]))
