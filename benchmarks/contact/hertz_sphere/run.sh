@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Hertz point contact (issue #5 benchmark, validation.md rung 11): the scene
+# prm/hertz_sphere.prm (sphere R = 1 m on a flat foundation, both E = 1 GPa,
+# nu = 0.3, quarter model) on meshes h = a/2, a/3, a/4 at the contact
+# (bodies 20 a = 0.2 m wide and deep), plus h = a/3 with bodies 40 a for the
+# error of the finite bodies. Per step: contact radius a, peak pressure p0
+# and the approach of the two axis probes at 2 a against Hertz
+# (hertz_sphere.py), run time and Newton iterations (report.py).
+# Usage: benchmarks/contact/hertz_sphere/run.sh [NP]   (default 2 ranks;
+#        about 30 min in all on 2 cores; a/4 alone 13 min)
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/../../../scripts/env.sh"
+np=${1:-2}
+exe="$build_dir/ductile-contact"
+[[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
+mkdir -p "$here/runs/meshes"
+for case in 2:0.2 3:0.2 3:0.4 4:0.2; do
+  ratio=${case%%:*} width=${case##*:}
+  name="h$ratio-w$width"
+  mesh="$here/runs/meshes/$name.msh"
+  [[ -f "$mesh" ]] || /usr/bin/python3 "$project_root/prm/meshes/make_hertz_sphere.py" \
+    1 0.01 "$ratio" "$width" 1.5 "$mesh" > /dev/null
+  dir="$here/runs/$name"
+  if [[ -f "$dir/statistics" ]] && grep -q "Total wallclock" "$dir/screen.txt"; then
+    echo "== $name (done)"
+    continue
+  fi
+  mkdir -p "$dir"
+  sed -e "s|prm/meshes/hertz_sphere.msh|$mesh|" -e "s|results/hertz_sphere|$dir|" \
+    "$project_root/prm/hertz_sphere.prm" > "$dir/scene.prm"
+  echo "== $name"
+  mpirun -np "$np" "$exe" "$dir/scene.prm" > "$dir/screen.txt" 2>&1 ||
+    echo "   failed, see $dir/screen.txt"
+  rm -f "$dir"/*.vtu "$dir"/*.pvtu
+done
+/usr/bin/python3 "$here/report.py" "$here"
