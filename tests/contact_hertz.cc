@@ -88,22 +88,11 @@ end
     const double a_h    = std::sqrt(4. * P * R / (M_PI * E_star));
     const double p0_h   = 2. * P / (M_PI * a_h);
 
-    // Least squares for p^2 = c0 + c1 x^2 over the nodes inside 0.8 a.
-    double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
+    std::vector<double> x2(x.size());
     for (unsigned int i = 0; i < x.size(); ++i)
-      if (p[i] > 0. && x[i] <= 0.8 * a_h)
-        {
-          const double u = x[i] * x[i], v = p[i] * p[i];
-          s0 += 1;
-          s1 += u;
-          s2 += u * u;
-          t0 += v;
-          t1 += u * v;
-        }
-    const double det = s0 * s2 - s1 * s1;
-    const double c0  = (s2 * t0 - s1 * t1) / det;
-    const double c1  = (s0 * t1 - s1 * t0) / det;
-    const double a = std::sqrt(-c0 / c1), p0 = std::sqrt(c0);
+      x2[i] = x[i] * x[i];
+    const auto [a, p0] =
+      Testing::fit_hertz_pressure(x2, p, std::pow(0.8 * a_h, 2));
     std::cout << "h = a/" << ratio << ": P " << P << ", a " << a << " (Hertz "
               << a_h << "), p0 " << p0 << " (Hertz " << p0_h << ")"
               << std::endl;

@@ -16,9 +16,9 @@
 // per mesh): approach within 10 %, a within 8 %, p0 within 25 %; the contact
 // force balances the reaction on the top face; the penetration is below the
 // tolerance.
-#include "tests.h"
-
 #include <deal.II/base/quadrature_lib.h>
+
+#include "tests.h"
 
 #include <cmath>
 
@@ -99,9 +99,9 @@ main(int argc, char **argv)
   // The half-space integral against its closed limit: the compression of
   // the whole axis is the surface displacement pi a p0 (1 - nu^2)/(2 E).
   out << "axis integral to z = 1e6 a equals pi (1 - nu^2)/2 (1e-5): "
-      << Testing::yes_no(std::abs(axial_compression(1e6) /
-                                    (M_PI * (1. - nu * nu) / 2.) -
-                                  1.) < 1e-5)
+      << Testing::yes_no(
+           std::abs(axial_compression(1e6) / (M_PI * (1. - nu * nu) / 2.) -
+                    1.) < 1e-5)
       << std::endl;
 
   const std::string dir   = "hertz_sphere";
@@ -118,45 +118,32 @@ main(int argc, char **argv)
   const double approach =
     stats.at("probe1_u_z").back() - stats.at("probe2_u_z").back();
 
-  // Least squares for p^2 = c0 + c1 r^2 over the nodes inside 0.8 a.
-  const auto &x = nodes.at("x"), &y = nodes.at("y"), &p = nodes.at("pressure");
-  double      s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
+  const auto         &x = nodes.at("x"), &y = nodes.at("y");
+  std::vector<double> r2(x.size());
   for (unsigned int i = 0; i < x.size(); ++i)
-    {
-      const double r2 = x[i] * x[i] + y[i] * y[i];
-      if (p[i] > 0. && r2 <= std::pow(0.8 * a_h, 2))
-        {
-          const double v = p[i] * p[i];
-          s0 += 1;
-          s1 += r2;
-          s2 += r2 * r2;
-          t0 += v;
-          t1 += r2 * v;
-        }
-    }
-  const double det = s0 * s2 - s1 * s1;
-  const double c0  = (s2 * t0 - s1 * t1) / det;
-  const double c1  = (s0 * t1 - s1 * t0) / det;
-  const double a = std::sqrt(-c0 / c1), p0 = std::sqrt(c0);
+    r2[i] = x[i] * x[i] + y[i] * y[i];
+  const auto [a, p0] = Testing::fit_hertz_pressure(r2,
+                                                   nodes.at("pressure"),
+                                                   std::pow(0.8 * a_h, 2));
   std::cout << "P " << P << ", a " << a << " (Hertz " << a_h << "), p0 " << p0
             << " (Hertz " << p0_h << "), approach " << approach << " (Hertz "
             << approach_h << ")" << std::endl;
 
-  const auto within = [&](const char *what, double value, double hertz,
-                          double limit) {
-    const double error = std::abs(value / hertz - 1.);
-    out << "h = a/2: " << what << " within " << 100 * limit
-        << " % of Hertz: " << Testing::yes_no(error < limit) << std::endl;
-  };
+  const auto within =
+    [&](const char *what, double value, double hertz, double limit) {
+      const double error = std::abs(value / hertz - 1.);
+      out << "h = a/2: " << what << " within " << 100 * limit
+          << " % of Hertz: " << Testing::yes_no(error < limit) << std::endl;
+    };
   within("approach of the axis probes at 2 a", approach, approach_h, 0.10);
   within("contact radius a", a, a_h, 0.08);
   within("peak pressure p0", p0, p0_h, 0.25);
   // contact1_force: what the slave (indenter) exerts on the master; the top
   // face's reaction balances its opposite.
   out << "contact force balances the reaction (1e-6, Newton tolerance): "
-      << Testing::yes_no(
-           std::abs(F - stats.at("contact1_force_z").back()) / std::abs(F) <
-           1e-6)
+      << Testing::yes_no(std::abs(F - stats.at("contact1_force_z").back()) /
+                           std::abs(F) <
+                         1e-6)
       << std::endl
       << "penetration below 1e-6 h: "
       << Testing::yes_no(stats.at("contact1_max_penetration").back() <

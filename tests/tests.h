@@ -140,6 +140,34 @@ subsection Contact pair 1
            pair_entries + "end\n";
   }
 
+  /**
+   * Hertz fit of nodal contact pressures: least squares of
+   * p^2 = p0^2 (1 - r^2/a^2) over the nodes with p > 0 and r^2 <= @p r2_max
+   * (@p r2: squared distance of each node from the centre of the contact).
+   * Returns {a, p0}.
+   */
+  inline std::pair<double, double>
+  fit_hertz_pressure(const std::vector<double> &r2,
+                     const std::vector<double> &p,
+                     const double               r2_max)
+  {
+    double s0 = 0, s1 = 0, s2 = 0, t0 = 0, t1 = 0;
+    for (unsigned int i = 0; i < r2.size(); ++i)
+      if (p[i] > 0. && r2[i] <= r2_max)
+        {
+          const double u = r2[i], v = p[i] * p[i];
+          s0 += 1;
+          s1 += u;
+          s2 += u * u;
+          t0 += v;
+          t1 += u * v;
+        }
+    const double det = s0 * s2 - s1 * s1;
+    const double c0  = (s2 * t0 - s1 * t1) / det;
+    const double c1  = (s0 * t1 - s1 * t0) / det;
+    return {std::sqrt(-c0 / c1), std::sqrt(c0)};
+  }
+
   /// Length of the vector statistics columns contact1_<what>_x/y/z in row
   /// @p n (what = force or friction).
   inline double

@@ -1,7 +1,7 @@
 """Shared by the mesh generators: writes hexahedral meshes as Gmsh 2.2 ASCII
 files, the format the 'gmsh' scene reads (deal.II GridIn::read_msh), and
 meshes plane-strain bodies column by column (column_body) and 3-D bodies
-over a grid of columns (block_body).
+over a grid of columns (block_body); graded() spaces the grid lines.
 
 nodes: list of (x, y, z), numbered from 1 in list order.
 elements: list of (gmsh_type, physical_tag, [node numbers]); type 5 is an
@@ -98,3 +98,20 @@ def block_body(nodes, elements, xs, ys, levels, volume, faces):
                     elements.append((3, faces["y0"], [v[0], v[1], v[5], v[4]]))
                 if j == ny - 2:
                     elements.append((3, faces["y1"], [v[3], v[7], v[6], v[2]]))
+
+
+def graded(h, length_fine, total, growth):
+    """Offsets 0 .. total: spacing h up to length_fine, then growing by
+    `growth` per element (the last ones stretched to end at total)."""
+    n = max(1, round(length_fine / h))
+    pts = [length_fine * i / n for i in range(n + 1)]
+    size = h
+    tail = []
+    while pts[-1] + sum(tail) + size * growth < total - 1e-12:
+        size *= growth
+        tail.append(size)
+    scale = (total - pts[-1]) / sum(tail) if tail else 1.0
+    for s in tail:
+        pts.append(pts[-1] + s * scale)
+    pts[-1] = total
+    return pts

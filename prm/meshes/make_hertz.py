@@ -22,7 +22,7 @@ Usage: make_hertz.py R A H_OVER_A W OUTPUT.msh
 import math
 import sys
 
-from gmsh_writer import column_body, write_gmsh
+from gmsh_writer import column_body, graded, write_gmsh
 
 R = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0
 a = float(sys.argv[2]) if len(sys.argv) > 2 else 0.01
@@ -32,26 +32,8 @@ out = sys.argv[5] if len(sys.argv) > 5 else "hertz.msh"
 h = a / ratio
 H = W
 
-
-def graded(length_fine, total):
-    """Offsets 0 .. total: spacing h up to length_fine, then growing by
-    1.25 per element (the last ones stretched to end at total)."""
-    n = max(1, round(length_fine / h))
-    pts = [length_fine * i / n for i in range(n + 1)]
-    size = h
-    tail = []
-    while pts[-1] + sum(tail) + size * 1.25 < total - 1e-12:
-        size *= 1.25
-        tail.append(size)
-    scale = (total - pts[-1]) / sum(tail) if tail else 1.0
-    for s in tail:
-        pts.append(pts[-1] + s * scale)
-    pts[-1] = total
-    return pts
-
-
-xs = graded(3 * a, W)
-ds = graded(2 * a, H)  # depth below / height above the contact point
+xs = graded(h, 3 * a, W, 1.25)
+ds = graded(h, 2 * a, H, 1.25)  # depth below / height above the contact point
 zs = [0.0, h]
 nodes, elements = [], []
 

@@ -22,7 +22,7 @@ Usage: make_hertz_sphere.py R A H_OVER_A W GROWTH OUTPUT.msh
 import math
 import sys
 
-from gmsh_writer import block_body, write_gmsh
+from gmsh_writer import block_body, graded, write_gmsh
 
 R = float(sys.argv[1]) if len(sys.argv) > 1 else 1.0
 a = float(sys.argv[2]) if len(sys.argv) > 2 else 0.01
@@ -33,26 +33,8 @@ out = sys.argv[6] if len(sys.argv) > 6 else "hertz_sphere.msh"
 h = a / ratio
 assert W < R / 2, "the cap must stay well inside the sphere"
 
-
-def graded(length_fine, total):
-    """Offsets 0 .. total: spacing h up to length_fine, then growing by
-    `growth` per element (the last ones stretched to end at total)."""
-    n = max(1, round(length_fine / h))
-    pts = [length_fine * i / n for i in range(n + 1)]
-    size = h
-    tail = []
-    while pts[-1] + sum(tail) + size * growth < total - 1e-12:
-        size *= growth
-        tail.append(size)
-    scale = (total - pts[-1]) / sum(tail) if tail else 1.0
-    for s in tail:
-        pts.append(pts[-1] + s * scale)
-    pts[-1] = total
-    return pts
-
-
-xs = graded(1.5 * a, W)
-ds = graded(a, W)  # depth below / height above the contact point
+xs = graded(h, 1.5 * a, W, growth)
+ds = graded(h, a, W, growth)  # depth below / height above the contact point
 nodes, elements = [], []
 
 
