@@ -6,9 +6,10 @@ source "$(dirname "$0")/env.sh"
 "$project_root/scripts/install-deps.sh"
 "$project_root/scripts/build.sh"
 cd "$build_dir"
-# Build the test programs first: make knows that a test run on 1 and on 2
-# ranks share one program, ctest would build it twice at once (a race on
-# the object file).
+# Build the test programs first, in parallel, so that ctest's time is the
+# tests' (the harness still relinks a program before each of its runs; the
+# 1-, 2- and 3-rank runs of one program share a RESOURCE_LOCK for that,
+# tests/CMakeLists.txt).
 targets=$(make help | sed -n 's/^\.\.\. \(tests\.[A-Za-z0-9_]*\.release\)$/\1/p')
 echo "building $(echo $targets | wc -w) test programs"
 make -j"$(nproc)" $targets > /dev/null

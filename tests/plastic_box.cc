@@ -113,21 +113,19 @@ main(int argc, char **argv)
       const auto   stats =
         Testing::run_scene(box_prm(dt), "plastic_box_" + std::to_string(k));
 
-      const DriverErrors worst        = compare_with_driver(stats, p);
-      const double       worst_force  = worst.force;
-      const double       worst_energy = worst.energy;
-      const std::size_t  last         = stats.at("time").size() - 1;
-      residual[k]                     = stats.at("energy_residual")[last];
-      const double W_p                = stats.at("plastic_work")[last];
-      const double Psi_p              = stats.at("hardening_energy")[last];
+      const DriverErrors worst = compare_with_driver(stats, p);
+      const std::size_t  last  = stats.at("time").size() - 1;
+      residual[k]              = stats.at("energy_residual")[last];
+      const double W_p         = stats.at("plastic_work")[last];
+      const double Psi_p       = stats.at("hardening_energy")[last];
       out << "dt = " << dt << ": reaction equals the driver's P_xx (1e-6): "
-          << Testing::yes_no(worst_force < 1e-6) << std::endl
+          << Testing::yes_no(worst.force < 1e-6) << std::endl
           << "  hardening energy equals the driver's (1e-6): "
-          << Testing::yes_no(worst_energy < 1e-6) << std::endl
+          << Testing::yes_no(worst.energy < 1e-6) << std::endl
           << "  plastic work = hardening energy (1 %): "
           << Testing::yes_no(std::abs(W_p - Psi_p) < 0.01 * Psi_p) << std::endl;
-      std::cout << "dt " << dt << " worst force " << worst_force
-                << " worst energy " << worst_energy << " W_p " << W_p
+      std::cout << "dt " << dt << " worst force " << worst.force
+                << " worst energy " << worst.energy << " W_p " << W_p
                 << " Psi_p " << Psi_p << " residual " << residual[k]
                 << " W_ext " << stats.at("external_work")[last] << std::endl;
     }

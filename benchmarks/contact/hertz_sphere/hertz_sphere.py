@@ -76,9 +76,8 @@ def evaluate(directory, R=1.0, E=1e9, nu=0.3, d=0.02):
         a, p0 = fit(np.loadtxt(path, skiprows=1), a_h)
         rows.append(dict(step=step, P=P, a=a, a_h=a_h, p0=p0, p0_h=p0_h,
                          approach=s["probe1_u_z"] - s["probe2_u_z"], approach_h=approach_h,
-                         balance=abs(4 * s["contact1_force_z"] - P) / P,
                          penetration=s["contact1_max_penetration"],
-                         newton=int(s["newton_iterations"]), wall=s["wall_time"]))
+                         newton=int(s["newton_iterations"])))
     return rows
 
 
