@@ -36,7 +36,13 @@ namespace DuctileContact
         quadrature.push_back(QGauss<dim>(degree + 1));
         face_quadrature.push_back(QGauss<dim - 1>(degree + 1));
       }
-    mapping.push_back(MappingQ<dim>(1));
+    // Curved geometry (a manifold other than flat, e.g. the round bar's
+    // hull) is represented to the order of the elements; straight-sided
+    // meshes keep the cheaper bilinear mapping.
+    bool curved = false;
+    for (const types::manifold_id id : tria.get_manifold_ids())
+      curved = curved || id != numbers::flat_manifold_id;
+    mapping.push_back(MappingQ<dim>(curved ? degree : 1));
   }
 
 

@@ -107,10 +107,11 @@ namespace DuctileContact
     prm.add_parameter("Refinements",
                       round_bar.refinements,
                       "Uniform refinements of the coarse cylinder (5 cells "
-                      "per cross-section) while its hull is kept round: "
-                      "5 * 4^r cells per cross-section, Axial subdivisions "
-                      "* 2^r along the axis. Mesh/Global refinements would "
-                      "refine the resulting faceted bar instead.",
+                      "per cross-section): 5 * 4^r cells per cross-section, "
+                      "Axial subdivisions * 2^r along the axis. The hull is "
+                      "the exact tapered surface at every level (also for "
+                      "Mesh/Global refinements and refinement boxes), and "
+                      "the cells are curved to the element degree.",
                       Patterns::Integer(0, 5));
     prm.leave_subsection();
 
