@@ -281,6 +281,12 @@ namespace DuctileContact
       {
         statistics.add("plastic_work", plastic_work);
         statistics.add("hardening_energy", committed.hardening_energy);
+        statistics.add("max_alpha", committed.max_alpha);
+        const double min_increment = committed.min_yielding_alpha_increment;
+        statistics.add("min_alpha_change_yielding",
+                       min_increment < std::numeric_limits<double>::max()
+                         ? min_increment
+                         : 0.);
       }
     if (cracking)
       {

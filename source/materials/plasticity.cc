@@ -88,9 +88,12 @@ namespace DuctileContact
                      std::sqrt(2. / 3.) * hardening_of(history_n.alpha, p) >
                    0.;
 
-      // 2. Plastic flow from the current alpha of the global field.
+      // 2. Plastic flow from the current alpha of the global field. Not
+      // clamped at alpha < alpha_n: the clamp left Newton a tangent without
+      // dtau/dalpha wherever an iterate dipped below alpha_n, and the
+      // hardening equation alone then drove alpha far off (necking bar).
       e.Cp_inv = Cp_inv_n;
-      if (e.yielding && value_of(alpha) >= history_n.alpha)
+      if (e.yielding)
         {
           const Number lambda = std::sqrt(1.5) * (alpha - history_n.alpha) / dt;
           const Tensor<2, dim, Number>          F_inv        = invert(F);

@@ -498,8 +498,10 @@ namespace DuctileContact
                 break;
               }
             verbose_out << "        line search: step " << step_length
-                        << (trial_info.inverted ? " inverts an element"
-                                                : " does not reduce |R|")
+                        << (trial_info.inverted
+                              ? std::string(" inverts an element")
+                              : " does not reduce |R| (merit ratio " +
+                                  std::to_string(trial_r / r) + ")")
                         << std::endl;
           }
         if (!accepted)

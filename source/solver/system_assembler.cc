@@ -287,6 +287,11 @@ namespace DuctileContact
                   const double l_p = body.plastic_length_scale;
                   const double gradient_coefficient =
                     m.yielding ? plastic.initial_yield * l_p * l_p : 0.;
+                  info.max_alpha = std::max(info.max_alpha, alpha[q]);
+                  if (m.yielding)
+                    info.min_yielding_alpha_increment =
+                      std::min(info.min_yielding_alpha_increment,
+                               alpha[q] - history_n[q]->plastic.alpha);
                   info.hardening_energy +=
                     (integrated_hardening(alpha[q], plastic) +
                      0.5 * plastic.initial_yield * l_p * l_p *
@@ -501,6 +506,9 @@ namespace DuctileContact
     const MPI_Comm comm = discretisation.dof_handler.get_communicator();
     info.inverted       = Utilities::MPI::max(info.inverted ? 1 : 0, comm) > 0;
     info.min_J          = Utilities::MPI::min(info.min_J, comm);
+    info.max_alpha      = Utilities::MPI::max(info.max_alpha, comm);
+    info.min_yielding_alpha_increment =
+      Utilities::MPI::min(info.min_yielding_alpha_increment, comm);
     std::vector<double> sums{info.stored_energy,
                              info.hardening_energy,
                              info.fracture_energy,

@@ -81,17 +81,25 @@ namespace DuctileContact
    * Material point update of model.md section 3, steps 1-3, a pure
    * function: trial state b_tr = F (C^p_n)^{-1} F^T, yield check with the
    * degraded trial stress, then, if yielding, lambda_p = sqrt(3/2) (alpha -
-   * alpha_n)/dt (never negative) and
+   * alpha_n)/dt and
    *   (C^p)^{-1} = (C^p_n)^{-1} - 2/3 dt lambda_p tr[b_tr] F^{-1} n_tr F^{-T},
    * rescaled to determinant 1 (plastic incompressibility to round-off);
    * finally tau = kappa g_vol(s) (J^2 - J) I + mu g_dev(s) dev[bbar^e].
    *
    * The tangents with respect to F, alpha and s are exact: forward-mode
    * automatic differentiation (Sacado DFad with 11 directions) of the same
-   * code (the yield switch chi_p and the clamp of lambda_p are fixed at
-   * their values, as in Newton's method). At alpha = alpha_n on a yielding
-   * point the flow branch is taken (lambda_p = 0): its derivative is the
-   * one-sided one into alpha > alpha_n, the direction Newton must go.
+   * code (the yield switch chi_p is fixed at its value, as in Newton's
+   * method).
+   *
+   * lambda_p is not clamped at zero: a Newton iterate with alpha < alpha_n
+   * at a yielding point gets the (reverse) flow of that alpha, so that the
+   * residual stays smooth in alpha and dtau/dalpha never vanishes there.
+   * (A clamp left the hardening equation alone at such points, with the
+   * slope of y(alpha) instead of ~3 mu, and Newton drove alpha far off:
+   * the necking bar failed its second step at every step size.) At a
+   * converged state the hardening equation gives alpha >= alpha_n at
+   * yielding points except where the gradient term pulls it down; the
+   * assembly reports the smallest alpha - alpha_n there.
    */
   PlasticResponse
   plastic_update(const dealii::Tensor<2, dim> &F,

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <deque>
+#include <limits>
 #include <map>
 #include <memory>
 #include <vector>
@@ -41,7 +42,12 @@ namespace DuctileContact
     /// balance closes as dt -> 0), and the viscous dissipation of the
     /// phase field int eta_f (s - s_n)^2/dt. The plastic work is only
     /// computed when the history is committed (AssemblyTargets::history).
-    double plastic_work_increment          = 0.;
+    double plastic_work_increment = 0.;
+    /// Largest alpha at a quadrature point, and the smallest alpha -
+    /// alpha_n over the yielding ones (chi_p = 1; +inf if none yields): a
+    /// negative value is plastic flow reversed by the gradient term.
+    double max_alpha                       = 0.;
+    double min_yielding_alpha_increment    = std::numeric_limits<double>::max();
     double fracture_viscous_work_increment = 0.;
     /// Size of the terms summed into f_int: sqrt of the sum over cells and
     /// DoFs of (sum over quadrature points of (|P : Grad N_i| + (mu + kappa)
