@@ -395,11 +395,18 @@ namespace DuctileContact
           contact->write_output(parameters.output.directory, 0, 0.);
       }
 
+    // The last accepted increment and its step size, for the linear
+    // predictor.
+    TrilinosWrappers::MPI::BlockVector last_increment = u;
+    double                             last_dt        = 0.;
+
     unsigned int cutbacks = 0;
     while (t < T - eps)
       {
         const double                             dt_try = std::min(dt, T - t);
         const TrilinosWrappers::MPI::BlockVector u_old  = u;
+        if (ls.predictor == "linear" && last_dt > 0.)
+          u.add(dt_try / last_dt, last_increment);
         const StepData step_data{t + dt_try, dt_try, &old_solution, &history};
         const NewtonReport report =
           newton->solve_step(step_data, u, internal_force);
@@ -427,6 +434,9 @@ namespace DuctileContact
         // Accepted step.
         t += dt_try;
         ++step;
+        last_increment = u;
+        last_increment -= u_old;
+        last_dt = dt_try;
         {
           TrilinosWrappers::MPI::BlockVector du = u;
           du -= u_old;

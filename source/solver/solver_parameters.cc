@@ -35,6 +35,18 @@ namespace DuctileContact
                       "A step that converged in at most this many Newton "
                       "iterations counts as easy.",
                       Patterns::Integer(1));
+    prm.add_parameter(
+      "Predictor",
+      predictor,
+      "First guess of every unknown (u, alpha, s) at the start of a step. "
+      "'constant': the last converged state (Newton's first iteration then "
+      "applies the new boundary data with the tangent of that state; in a "
+      "plastic body this is an elastic predictor whose stresses may "
+      "overshoot the yield stress by a whole step's strain). 'linear': the "
+      "last converged state plus the last step's increment scaled by the "
+      "ratio of the step sizes (from the second step on; for monotonic "
+      "loading the first residual is then of second order in the step).",
+      Patterns::Selection("constant|linear"));
     prm.leave_subsection();
   }
 

@@ -19,6 +19,8 @@ namespace DuctileContact
     double       minimum_time_step = 1.e-6;
     double       growth_factor     = 1.5;
     unsigned int easy_newton_steps = 5;
+    /// constant | linear: first guess of a step (see declare()).
+    std::string predictor = "constant";
 
     void
     declare(dealii::ParameterHandler &prm);
