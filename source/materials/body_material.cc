@@ -7,13 +7,14 @@ namespace DuctileContact
   using namespace dealii;
 
   PointResponse
-  evaluate_material(const BodyParameters &body,
-                    const Tensor<2, dim> &F,
-                    const PlasticHistory &history_n,
-                    const double          alpha,
-                    const double          s,
-                    const double          dt,
-                    const bool            with_tangent)
+  evaluate_material(const BodyParameters      &body,
+                    const Tensor<2, dim>      &F,
+                    const PlasticHistory      &history_n,
+                    const double               alpha,
+                    const double               s,
+                    const double               dt,
+                    const bool                 with_tangent,
+                    const std::optional<bool> &frozen_yielding)
   {
     PointResponse r;
     if (body.plasticity)
@@ -24,7 +25,8 @@ namespace DuctileContact
                                                  body.fracture ? s : 0.,
                                                  dt,
                                                  body.material(),
-                                                 with_tangent);
+                                                 with_tangent,
+                                                 frozen_yielding);
         r.J                     = p.J;
         r.psi_elastic           = p.psi_elastic;
         r.psi_plus              = p.psi_plus;
@@ -38,6 +40,7 @@ namespace DuctileContact
         r.dr_ds                 = p.dr_ds;
         r.dr_dF                 = p.dr_dF;
         r.yielding              = p.yielding;
+        r.trial_yielding        = p.trial_yielding;
         r.dpsi_plus_dF          = p.dpsi_plus_dF;
         r.dpsi_plus_dalpha      = p.dpsi_plus_dalpha;
         r.updated               = p.updated;

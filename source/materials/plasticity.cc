@@ -49,7 +49,7 @@ namespace DuctileContact
       Number                          J, psi_elastic, psi_plus, r;
       SymmetricTensor<2, dim, Number> tau, Cp_inv;
       Tensor<2, dim, Number>          P;
-      bool                            yielding;
+      bool                            yielding, trial_yielding;
     };
 
     template <typename Number>
@@ -67,7 +67,8 @@ namespace DuctileContact
              const Number                 &alpha,
              const Number                 &s,
              const double                  dt,
-             const PlasticityParameters   &p)
+             const PlasticityParameters   &p,
+             const std::optional<bool>    &frozen_yielding)
     {
       const double       mu = p.shear_modulus, kappa = p.bulk_modulus;
       Evaluation<Number> e;
@@ -84,9 +85,11 @@ namespace DuctileContact
       const SymmetricTensor<2, dim, Number> tau_dev_tr =
         mu_g * deviator(b_bar_tr);
       const Number norm_tr = std::sqrt(tau_dev_tr * tau_dev_tr);
-      e.yielding           = value_of(norm_tr) -
-                     std::sqrt(2. / 3.) * hardening_of(history_n.alpha, p) >
-                   0.;
+      e.trial_yielding =
+        value_of(norm_tr) -
+          std::sqrt(2. / 3.) * hardening_of(history_n.alpha, p) >
+        0.;
+      e.yielding = frozen_yielding ? *frozen_yielding : e.trial_yielding;
 
       // 2. Plastic flow from the current alpha of the global field. Not
       // clamped at alpha < alpha_n: the clamp left Newton a tangent without
@@ -163,21 +166,23 @@ namespace DuctileContact
                  const double                s,
                  const double                dt,
                  const PlasticityParameters &parameters,
-                 const bool                  with_tangent)
+                 const bool                  with_tangent,
+                 const std::optional<bool>  &frozen_yielding)
   {
     PlasticResponse response;
     if (!with_tangent)
       {
-        const Evaluation<double> e =
-          evaluate<double>(F, history_n, alpha, s, dt, parameters);
-        response.J           = e.J;
-        response.psi_elastic = e.psi_elastic;
-        response.psi_plus    = e.psi_plus;
-        response.tau         = e.tau;
-        response.P           = e.P;
-        response.r           = e.r;
-        response.yielding    = e.yielding;
-        response.updated     = {e.Cp_inv, alpha};
+        const Evaluation<double> e = evaluate<double>(
+          F, history_n, alpha, s, dt, parameters, frozen_yielding);
+        response.J              = e.J;
+        response.psi_elastic    = e.psi_elastic;
+        response.psi_plus       = e.psi_plus;
+        response.tau            = e.tau;
+        response.P              = e.P;
+        response.r              = e.r;
+        response.yielding       = e.yielding;
+        response.trial_yielding = e.trial_yielding;
+        response.updated        = {e.Cp_inv, alpha};
         return response;
       }
 
@@ -187,15 +192,16 @@ namespace DuctileContact
       for (unsigned int D = 0; D < dim; ++D)
         F_ad[c][D] = ADNumber(11, dim * c + D, F[c][D]);
     const ADNumber             alpha_ad(11, 9, alpha), s_ad(11, 10, s);
-    const Evaluation<ADNumber> e =
-      evaluate<ADNumber>(F_ad, history_n, alpha_ad, s_ad, dt, parameters);
+    const Evaluation<ADNumber> e = evaluate<ADNumber>(
+      F_ad, history_n, alpha_ad, s_ad, dt, parameters, frozen_yielding);
 
-    response.J             = e.J.val();
-    response.psi_elastic   = e.psi_elastic.val();
-    response.psi_plus      = e.psi_plus.val();
-    response.r             = e.r.val();
-    response.yielding      = e.yielding;
-    response.updated.alpha = alpha;
+    response.J              = e.J.val();
+    response.psi_elastic    = e.psi_elastic.val();
+    response.psi_plus       = e.psi_plus.val();
+    response.r              = e.r.val();
+    response.yielding       = e.yielding;
+    response.trial_yielding = e.trial_yielding;
+    response.updated.alpha  = alpha;
     for (unsigned int a = 0; a < dim; ++a)
       for (unsigned int b = a; b < dim; ++b)
         {

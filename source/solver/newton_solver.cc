@@ -213,7 +213,9 @@ namespace DuctileContact
         TrilinosWrappers::MPI::BlockVector trial = u;
         trial.add(sign * e, delta);
         u_ghosted = trial;
-        assemble(step, constraints, {nullptr, nullptr, &residual, nullptr});
+        AssemblyTargets targets{nullptr, nullptr, &residual, nullptr};
+        targets.yield_switch = AssemblyTargets::YieldSwitch::frozen;
+        assemble(step, constraints, targets);
         if (sign > 0.)
           difference = residual;
         else
@@ -408,6 +410,10 @@ namespace DuctileContact
                   << std::defaultfloat << std::endl;
     };
 
+    // Whether the last accepted state was reached with a frozen yield
+    // switch that its own trial states contradict: its residual is then
+    // not the true one, which the next assembly computes.
+    bool switch_changed = false;
     for (unsigned int it = 0;; ++it)
       {
         u_ghosted = u;
@@ -420,12 +426,13 @@ namespace DuctileContact
         const bool pending = dirichlet_pending();
 
         {
-          TimerOutput::Scope    scope(timer, "assembly");
-          const AssemblyTargets targets{&tangent,
-                                        &newton_rhs,
-                                        &residual,
-                                        &internal_force};
-          report.info = assemble(step, constraints, targets);
+          TimerOutput::Scope scope(timer, "assembly");
+          AssemblyTargets    targets{&tangent,
+                                  &newton_rhs,
+                                  &residual,
+                                  &internal_force};
+          targets.yield_switch = AssemblyTargets::YieldSwitch::record;
+          report.info          = assemble(step, constraints, targets);
         }
         const Norms  n     = block_norms();
         const double scale = internal_force.block(0).l2_norm();
@@ -443,7 +450,8 @@ namespace DuctileContact
           }
         // From the second iteration on, convergence is decided right after
         // the line search; only the start of a step is checked here.
-        if (it == 0 && !pending && converged(n, scale, report.info))
+        if ((it == 0 || switch_changed) && !pending &&
+            converged(n, scale, report.info))
           return report;
 
         unsigned int n_linear = 0;
@@ -479,15 +487,19 @@ namespace DuctileContact
             trial.add(step_length, delta);
             u_ghosted = trial;
             {
-              TimerOutput::Scope    scope(timer, "assembly (line search)");
-              const AssemblyTargets targets{nullptr,
-                                            nullptr,
-                                            &residual,
-                                            &internal_force};
-              trial_info  = assemble(step, constraints, targets);
-              trial_n     = block_norms();
-              trial_r     = merit(trial_n, tol);
-              trial_scale = internal_force.block(0).l2_norm();
+              TimerOutput::Scope scope(timer, "assembly (line search)");
+              // The yield switch of the iterate: R is smooth along the
+              // line (a plastic point switching within it would make R
+              // jump by its whole flow).
+              AssemblyTargets targets{nullptr,
+                                      nullptr,
+                                      &residual,
+                                      &internal_force};
+              targets.yield_switch = AssemblyTargets::YieldSwitch::frozen;
+              trial_info           = assemble(step, constraints, targets);
+              trial_n              = block_norms();
+              trial_r              = merit(trial_n, tol);
+              trial_scale          = internal_force.block(0).l2_norm();
             }
             const bool decreases = pending || !parameters.line_search ||
                                    trial_r <= (1. - 1e-4 * step_length) * r;
@@ -518,7 +530,9 @@ namespace DuctileContact
         const bool still_pending = pending && step_length < 1.;
         print(it + 1, trial_n, trial_scale, trial_info, still_pending);
         report.iterations = it + 1;
-        if (!still_pending && converged(trial_n, trial_scale, trial_info))
+        switch_changed    = trial_info.yield_flips > 0;
+        if (!still_pending && !switch_changed &&
+            converged(trial_n, trial_scale, trial_info))
           {
             report.info = trial_info;
             return report;

@@ -133,7 +133,15 @@ namespace DuctileContact
     std::vector<const PointHistory *> history_n;
 
     AssemblyInfo info;
-    info.min_J = std::numeric_limits<double>::max();
+    info.min_J        = std::numeric_limits<double>::max();
+    using YieldSwitch = AssemblyTargets::YieldSwitch;
+    if (targets.yield_switch == YieldSwitch::record)
+      recorded_yielding.assign(discretisation.triangulation.n_active_cells(),
+                               {});
+    Assert(targets.yield_switch != YieldSwitch::frozen ||
+             recorded_yielding.size() ==
+               discretisation.triangulation.n_active_cells(),
+           ExcMessage("a frozen yield switch needs a recorded one"));
 
     for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -231,14 +239,26 @@ namespace DuctileContact
                   info.inverted = true;
                   continue;
                 }
-              const PointResponse m   = evaluate_material(body,
+              std::optional<bool> frozen;
+              const unsigned int  index = cell->active_cell_index();
+              if (has_alpha && targets.yield_switch == YieldSwitch::frozen)
+                frozen = recorded_yielding[index].at(q) != 0;
+              const PointResponse m = evaluate_material(body,
                                                         F,
                                                         history_n[q]->plastic,
                                                         alpha[q],
                                                         s[q],
                                                         step.dt,
-                                                        with_tangent);
-              const double        JxW = fe_values.JxW(q);
+                                                        with_tangent,
+                                                        frozen);
+              if (has_alpha && targets.yield_switch == YieldSwitch::record)
+                {
+                  recorded_yielding[index].resize(n_q);
+                  recorded_yielding[index][q] = m.yielding;
+                }
+              if (frozen && m.trial_yielding != *frozen)
+                ++info.yield_flips;
+              const double JxW = fe_values.JxW(q);
               info.stored_energy += m.psi_elastic * JxW;
               volume += JxW;
               vm += von_mises(m.tau) * JxW;
@@ -509,6 +529,7 @@ namespace DuctileContact
     info.max_alpha      = Utilities::MPI::max(info.max_alpha, comm);
     info.min_yielding_alpha_increment =
       Utilities::MPI::min(info.min_yielding_alpha_increment, comm);
+    info.yield_flips = Utilities::MPI::sum(info.yield_flips, comm);
     std::vector<double> sums{info.stored_energy,
                              info.hardening_energy,
                              info.fracture_energy,

@@ -6,6 +6,8 @@
 #include <ductile_contact/materials/body_parameters.h>
 #include <ductile_contact/materials/plasticity.h>
 
+#include <optional>
+
 namespace DuctileContact
 {
   /**
@@ -27,7 +29,7 @@ namespace DuctileContact
     /// derivatives (plastic bodies only).
     double                 r = 0., dr_dalpha = 0., dr_ds = 0.;
     dealii::Tensor<2, dim> dr_dF;
-    bool                   yielding = false;
+    bool                   yielding = false, trial_yielding = false;
 
     dealii::Tensor<2, dim> dpsi_plus_dF;
     double                 dpsi_plus_dalpha = 0.;
@@ -55,5 +57,6 @@ namespace DuctileContact
                     const double                  alpha,
                     const double                  s,
                     const double                  dt,
-                    const bool                    with_tangent);
+                    const bool                    with_tangent,
+                    const std::optional<bool>    &frozen_yielding = {});
 } // namespace DuctileContact

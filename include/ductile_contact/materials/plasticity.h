@@ -5,6 +5,8 @@
 
 #include <ductile_contact/core/types.h>
 
+#include <optional>
+
 namespace DuctileContact
 {
   /**
@@ -65,8 +67,11 @@ namespace DuctileContact
     dealii::SymmetricTensor<2, dim> tau;
     dealii::Tensor<2, dim>          P;
     double                          r        = 0.;
-    bool                            yielding = false; ///< chi_p
-    PlasticHistory                  updated;
+    bool                            yielding = false; ///< chi_p used
+    /// chi_p of the trial-state test (differs from yielding only when a
+    /// frozen switch was imposed).
+    bool           trial_yielding = false;
+    PlasticHistory updated;
 
     /// Exact tangents (filled when requested).
     dealii::Tensor<4, dim> dP_dF;
@@ -89,7 +94,9 @@ namespace DuctileContact
    * The tangents with respect to F, alpha and s are exact: forward-mode
    * automatic differentiation (Sacado DFad with 11 directions) of the same
    * code (the yield switch chi_p is fixed at its value, as in Newton's
-   * method).
+   * method). @p frozen_yielding, if given, replaces the trial-state test
+   * for chi_p (the Newton line search keeps the switch of the iterate it
+   * starts from, so that the residual is smooth along the line).
    *
    * lambda_p is not clamped at zero: a Newton iterate with alpha < alpha_n
    * at a yielding point gets the (reverse) flow of that alpha, so that the
@@ -108,5 +115,6 @@ namespace DuctileContact
                  const double                  s,
                  const double                  dt,
                  const PlasticityParameters   &parameters,
-                 const bool                    with_tangent);
+                 const bool                    with_tangent,
+                 const std::optional<bool>    &frozen_yielding = {});
 } // namespace DuctileContact

@@ -42,13 +42,16 @@ namespace DuctileContact
     /// balance closes as dt -> 0), and the viscous dissipation of the
     /// phase field int eta_f (s - s_n)^2/dt. The plastic work is only
     /// computed when the history is committed (AssemblyTargets::history).
-    double plastic_work_increment = 0.;
+    double plastic_work_increment          = 0.;
+    double fracture_viscous_work_increment = 0.;
     /// Largest alpha at a quadrature point, and the smallest alpha -
     /// alpha_n over the yielding ones (chi_p = 1; +inf if none yields): a
     /// negative value is plastic flow reversed by the gradient term.
-    double max_alpha                       = 0.;
-    double min_yielding_alpha_increment    = std::numeric_limits<double>::max();
-    double fracture_viscous_work_increment = 0.;
+    double max_alpha                    = 0.;
+    double min_yielding_alpha_increment = std::numeric_limits<double>::max();
+    /// Plastic points whose trial-state switch differs from the frozen one
+    /// (YieldSwitch::frozen only): with none, R is the true residual.
+    unsigned int yield_flips = 0;
     /// Size of the terms summed into f_int: sqrt of the sum over cells and
     /// DoFs of (sum over quadrature points of (|P : Grad N_i| + (mu + kappa)
     /// |Grad N_i|) JxW)^2 [N]. F = I + Grad u resolves Grad u only to eps,
@@ -89,6 +92,16 @@ namespace DuctileContact
     QuadratureHistory *history = nullptr;
     /// Cell averages for output.
     CellQuantities *cell_quantities = nullptr;
+    /// The yield switch chi_p of the plastic points: from the trial state
+    /// (evaluate), from the trial state and remembered (record: Newton's
+    /// tangent assemblies), or the remembered one (frozen: line search and
+    /// tangent check, so that R is smooth along the Newton direction).
+    enum class YieldSwitch
+    {
+      evaluate,
+      record,
+      frozen
+    } yield_switch = YieldSwitch::evaluate;
   };
 
   /// The load step being solved: time, step and the accepted state before.
@@ -142,6 +155,9 @@ namespace DuctileContact
                    AssemblyInfo                            &info) const;
 
     const Discretisation &discretisation;
+    /// chi_p per (active cell index, quadrature point) of the last
+    /// YieldSwitch::record assembly.
+    mutable std::vector<std::vector<unsigned char>> recorded_yielding;
     const std::map<dealii::types::material_id, const BodyParameters *> bodies;
     const std::deque<BoundaryCondition> &boundary_conditions;
 
