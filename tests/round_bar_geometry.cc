@@ -25,18 +25,19 @@ main(int argc, char **argv)
   std::ofstream                    out = Testing::open_output();
 
   const double R = 6.413e-3, L = 53.334e-3, e = 0.018;
-  const double exact = M_PI * R * R * L * (1. + (1. - e) + (1. - e) * (1. - e)) / 3.;
+  const double exact =
+    M_PI * R * R * L * (1. + (1. - e) + (1. - e) * (1. - e)) / 3.;
 
   double previous = 0.;
   for (unsigned int r = 0; r < 3; ++r)
     {
       MeshParameters parameters;
-      parameters.scene                          = "round bar";
-      parameters.round_bar.radius               = R;
-      parameters.round_bar.length               = L;
-      parameters.round_bar.imperfection         = e;
-      parameters.round_bar.axial_subdivisions   = 4;
-      parameters.round_bar.refinements          = r;
+      parameters.scene                        = "round bar";
+      parameters.round_bar.radius             = R;
+      parameters.round_bar.length             = L;
+      parameters.round_bar.imperfection       = e;
+      parameters.round_bar.axial_subdivisions = 4;
+      parameters.round_bar.refinements        = r;
       parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
       create_scene_mesh(parameters, tria);
 
@@ -60,7 +61,7 @@ main(int argc, char **argv)
               for (const unsigned int v : face->vertex_indices())
                 {
                   const Point<dim> p = face->vertex(v);
-                  const double     f = 1. - e * (1. - std::abs(2. * p[0] / L - 1.));
+                  const double f = 1. - e * (1. - std::abs(2. * p[0] / L - 1.));
                   off_surface =
                     std::max(off_surface,
                              std::abs(std::hypot(p[1], p[2]) - f * R) / R);
