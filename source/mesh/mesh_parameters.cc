@@ -113,6 +113,17 @@ namespace DuctileContact
                       "Mesh/Global refinements and refinement boxes), and "
                       "the cells are curved to the element degree.",
                       Patterns::Integer(0, 5));
+    prm.add_parameter(
+      "Model",
+      round_bar.model,
+      "'full': the whole bar, boundary ids 0 = hull, 1 = end x = 0, 2 = end "
+      "x = L. 'octant': the eighth x >= L/2, y >= 0, z >= 0 (needs "
+      "Refinements >= 1; the cells are those of the full bar), boundary ids "
+      "0 = hull, 2 = end x = L, 3 = plane x = L/2, 4 = plane y = 0, 5 = "
+      "plane z = 0: with symmetry conditions on 3, 4, 5 it is the full bar "
+      "pulled at both ends by twice the end displacement, carrying 4 times "
+      "the end force, without the stress singularity of clamped ends.",
+      Patterns::Selection("full|octant"));
     prm.leave_subsection();
 
     prm.enter_subsection("Gmsh");
@@ -219,11 +230,18 @@ namespace DuctileContact
       }
 
     if (scene == "round bar")
-      check_input(round_bar.radius > 0. && round_bar.length > 0.,
-                  "Mesh/Round bar/Radius",
-                  Utilities::to_string(round_bar.radius) + " (Length " +
-                    Utilities::to_string(round_bar.length) + ")",
-                  "radius and length must be positive");
+      {
+        check_input(round_bar.radius > 0. && round_bar.length > 0.,
+                    "Mesh/Round bar/Radius",
+                    Utilities::to_string(round_bar.radius) + " (Length " +
+                      Utilities::to_string(round_bar.length) + ")",
+                    "radius and length must be positive");
+        check_input(round_bar.model == "full" || round_bar.refinements >= 1,
+                    "Mesh/Round bar/Refinements",
+                    Utilities::to_string(round_bar.refinements),
+                    "Model = octant needs at least 1 (the coarse cylinder's "
+                    "cells straddle the symmetry planes)");
+      }
 
     if (scene == "gmsh")
       {

@@ -94,11 +94,26 @@ namespace DuctileContact
   create_round_bar_scene(const MeshParameters::RoundBar &parameters,
                          Triangulation<dim>             &tria)
   {
-    const double R = parameters.radius, L = parameters.length;
+    const double                  R = parameters.radius, L = parameters.length;
+    const TaperedCylinderManifold hull(L, parameters.imperfection);
+
+    // Manifold ids: 0 on the hull faces and their edges (the tapered
+    // surface), 1 on everything else (transfinite interpolation from the
+    // hull into the cells; the end and symmetry faces stay plane).
+    // (Faces, not boundary ids of lines: the lines inside the symmetry
+    // planes carry the default boundary id 0 as well.)
+    const auto set_manifold_ids = [](Triangulation<dim> &mesh) {
+      mesh.set_all_manifold_ids(1);
+      for (const auto &cell : mesh.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() == 0)
+            face->set_all_manifold_ids(0);
+    };
 
     // The coarse cylinder (5 cells per cross-section, its 4 hull vertices
     // per section on the circle) along x in [-L/2, L/2], moved to [0, L]
-    // and tapered to (1 - imperfection) R at mid-length.
+    // and tapered to (1 - imperfection) R at mid-length. Boundary ids as
+    // generated: 0 hull, 1 end x = 0, 2 end x = L.
     Triangulation<dim> coarse;
     GridGenerator::subdivided_cylinder(coarse,
                                        parameters.axial_subdivisions,
@@ -111,21 +126,62 @@ namespace DuctileContact
         return Point<dim>(p[0] + 0.5 * L, f * p[1], f * p[2]);
       },
       coarse);
+    set_manifold_ids(coarse);
+    unsigned int refinements = parameters.refinements;
 
-    // Manifold ids: 0 on the hull faces and their edges (the tapered
-    // surface), 1 on everything else (transfinite interpolation from the
-    // hull into the cells; the end faces stay plane). Boundary ids as
-    // generated: 0 hull, 1 end x = 0, 2 end x = L.
-    coarse.set_all_manifold_ids(1);
-    coarse.set_all_manifold_ids_on_boundary(0, 0);
+    if (parameters.model == "octant")
+      {
+        // One refinement on the curved geometry puts every cell into one
+        // octant; those of x >= L/2, y >= 0, z >= 0 become the coarse mesh.
+        Triangulation<dim> refined;
+        refined.copy_triangulation(coarse);
+        refined.set_manifold(0, hull);
+        TransfiniteInterpolationManifold<dim> interior;
+        interior.initialize(refined);
+        refined.set_manifold(1, interior);
+        refined.refine_global(1);
+        --refinements;
+
+        Triangulation<dim> flat;
+        GridGenerator::flatten_triangulation(refined, flat);
+        const double                                       tolerance = 1e-9 * R;
+        std::set<Triangulation<dim>::active_cell_iterator> outside;
+        for (const auto &cell : flat.active_cell_iterators())
+          {
+            const Point<dim> c = cell->center();
+            if (c[0] < 0.5 * L || c[1] < 0. || c[2] < 0.)
+              outside.insert(cell);
+          }
+        coarse.clear();
+        GridGenerator::create_triangulation_with_removed_cells(flat,
+                                                               outside,
+                                                               coarse);
+        for (const auto &cell : coarse.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              {
+                const Point<dim> c = face->center();
+                if (std::abs(c[0] - 0.5 * L) < tolerance)
+                  face->set_boundary_id(3);
+                else if (std::abs(c[0] - L) < tolerance)
+                  face->set_boundary_id(2);
+                else if (std::abs(c[1]) < tolerance)
+                  face->set_boundary_id(4);
+                else if (std::abs(c[2]) < tolerance)
+                  face->set_boundary_id(5);
+                else
+                  face->set_boundary_id(0);
+              }
+        set_manifold_ids(coarse);
+      }
+
     for (const auto &cell : coarse.active_cell_iterators())
       cell->set_material_id(0);
-
     tria.copy_triangulation(coarse);
-    tria.set_manifold(0, TaperedCylinderManifold(L, parameters.imperfection));
+    tria.set_manifold(0, hull);
     TransfiniteInterpolationManifold<dim> interior;
     interior.initialize(tria);
     tria.set_manifold(1, interior);
-    tria.refine_global(parameters.refinements);
+    tria.refine_global(refinements);
   }
 } // namespace DuctileContact

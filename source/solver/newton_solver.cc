@@ -441,7 +441,7 @@ namespace DuctileContact
         if (it == 0)
           reference = tol;
         report.iterations = it;
-        if (it == 0)
+        if (it == 0 || switch_changed)
           print(it, n, scale, report.info, pending);
         if (!std::isfinite(r))
           {

@@ -61,6 +61,8 @@ namespace DuctileContact
       double       imperfection       = 0.018;
       unsigned int axial_subdivisions = 10;
       unsigned int refinements        = 1;
+      /// full | octant
+      std::string model = "full";
     } round_bar;
 
     struct Gmsh
