@@ -91,12 +91,10 @@ namespace DuctileContact
         0.;
       e.yielding = frozen_yielding ? *frozen_yielding : e.trial_yielding;
 
-      // 2. Plastic flow from the current alpha of the global field. Not
-      // clamped at alpha < alpha_n: the clamp left Newton a tangent without
-      // dtau/dalpha wherever an iterate dipped below alpha_n, and the
-      // hardening equation alone then drove alpha far off (necking bar).
+      // 2. Plastic flow from the current alpha of the global field, at
+      // every point and not clamped at alpha < alpha_n (see the header).
       e.Cp_inv = Cp_inv_n;
-      if (e.yielding)
+      if (value_of(norm_tr) > 0.)
         {
           const Number lambda = std::sqrt(1.5) * (alpha - history_n.alpha) / dt;
           const Tensor<2, dim, Number>          F_inv        = invert(F);
@@ -129,6 +127,15 @@ namespace DuctileContact
       if (e.yielding)
         e.r += hardening_of(alpha, p) -
                std::sqrt(1.5) * std::sqrt(tau_dev * tau_dev);
+      else
+        {
+          // Hold alpha at alpha_n with the yielding branch's slope.
+          const double slope =
+            (p.saturation_yield - p.initial_yield) * p.saturation_exponent *
+              std::exp(-p.saturation_exponent * history_n.alpha) +
+            p.linear_hardening;
+          e.r += (mu_g * trace(b_bar_tr) + slope) * (alpha - history_n.alpha);
+        }
       return e;
     }
   } // namespace

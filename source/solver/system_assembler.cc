@@ -305,8 +305,10 @@ namespace DuctileContact
               if (has_alpha)
                 {
                   const double l_p = body.plastic_length_scale;
+                  // The gradient term acts at every point, not only where
+                  // chi_p = 1 (see plastic_update()).
                   const double gradient_coefficient =
-                    m.yielding ? plastic.initial_yield * l_p * l_p : 0.;
+                    plastic.initial_yield * l_p * l_p;
                   info.max_alpha = std::max(info.max_alpha, alpha[q]);
                   if (m.yielding)
                     info.min_yielding_alpha_increment =

@@ -84,12 +84,34 @@ namespace DuctileContact
 
   /**
    * Material point update of model.md section 3, steps 1-3, a pure
-   * function: trial state b_tr = F (C^p_n)^{-1} F^T, yield check with the
-   * degraded trial stress, then, if yielding, lambda_p = sqrt(3/2) (alpha -
+   * function: trial state b_tr = F (C^p_n)^{-1} F^T and yield switch chi_p
+   * from the degraded trial stress; lambda_p = sqrt(3/2) (alpha -
    * alpha_n)/dt and
    *   (C^p)^{-1} = (C^p_n)^{-1} - 2/3 dt lambda_p tr[b_tr] F^{-1} n_tr F^{-T},
    * rescaled to determinant 1 (plastic incompressibility to round-off);
    * finally tau = kappa g_vol(s) (J^2 - J) I + mu g_dev(s) dev[bbar^e].
+   * r is the local part of (50): eta_p (alpha - alpha_n)/dt + yhat(alpha) -
+   * sqrt(3/2) |tau_dev| where chi_p = 1.
+   *
+   * Our choices where (50) and section 3 leave the discretisation open
+   * (found on the necking bar, whose Newton iteration cycled or stalled at
+   * the onset of the neck otherwise; README "Plasticity"):
+   *  - the flow formula is applied at every point with the alpha it is
+   *    given, not only where chi_p = 1, and lambda_p is not clamped at
+   *    alpha < alpha_n: tau is a smooth function of (F, alpha);
+   *  - where chi_p = 0 the local part is eta_p (alpha - alpha_n)/dt + c
+   *    (alpha - alpha_n) with c = mu g_dev tr[bbar_tr] + yhat'(alpha_n),
+   *    the slope the yielding branch has there (~3 mu + h): the continuum
+   *    equation (alpha = alpha_n, no flow) is the same, but alpha is held
+   *    at alpha_n as firmly as the yielding points hold theirs, and r is
+   *    continuous to first order in alpha - alpha_n where chi_p switches;
+   *  - the gradient term y_0 l_p^2 grad(alpha) . grad(delta alpha) acts
+   *    everywhere (SystemAssembler), not only where chi_p = 1: with c, an
+   *    elastic region holds alpha - alpha_n to a layer of width l_p
+   *    sqrt(y_0 / c) (~0.04 l_p for steel) at its border.
+   * At a converged state the yielding points have alpha >= alpha_n except
+   * where the gradient term pulls alpha down (statistics
+   * min_alpha_change_yielding).
    *
    * The tangents with respect to F, alpha and s are exact: forward-mode
    * automatic differentiation (Sacado DFad with 11 directions) of the same
@@ -97,16 +119,6 @@ namespace DuctileContact
    * method). @p frozen_yielding, if given, replaces the trial-state test
    * for chi_p (the Newton line search keeps the switch of the iterate it
    * starts from, so that the residual is smooth along the line).
-   *
-   * lambda_p is not clamped at zero: a Newton iterate with alpha < alpha_n
-   * at a yielding point gets the (reverse) flow of that alpha, so that the
-   * residual stays smooth in alpha and dtau/dalpha never vanishes there.
-   * (A clamp left the hardening equation alone at such points, with the
-   * slope of y(alpha) instead of ~3 mu, and Newton drove alpha far off:
-   * the necking bar failed its second step at every step size.) At a
-   * converged state the hardening equation gives alpha >= alpha_n at
-   * yielding points except where the gradient term pulls it down; the
-   * assembly reports the smallest alpha - alpha_n there.
    */
   PlasticResponse
   plastic_update(const dealii::Tensor<2, dim> &F,
