@@ -2,9 +2,11 @@
 // the scene prm/necking_bar.prm as shipped (octant model, l_p = 1 mm,
 // linear predictor), with 5 curved Q2 cells per quarter cross-section and 6
 // along the half bar, pulled the full 14 mm in 20 steps. Checks:
-//  - the end force has an interior maximum within 3 % of the Considere
-//    estimate 79.7 kN (the refined runs of benchmarks/plasticity/necking
-//    give the converged value), and falls after it;
+//  - the end force has an interior maximum within 1 % of Considere's load
+//    of the thinnest section, pi (0.982 R)^2 exp(-a) yhat(a) = 76.9 kN at
+//    yhat'(a) = yhat(a), a = 0.122 (79.7 kN is that of the section R; the
+//    refined runs of benchmarks/plasticity/necking give 77.30 kN), and
+//    falls below 0.9 of it by the end;
 //  - the neck forms at the imperfection: at the end the radius at
 //    mid-length has shrunk at least twice as much as half-way to the end;
 //  - alpha grows monotonically at every yielding point (the smallest
@@ -90,8 +92,8 @@ subsection Output
       << "interior force maximum, force at the end below 0.9 of it: "
       << Testing::yes_no(k_max > 0 && k_max + 1 < n && F[n - 1] < 0.9 * peak)
       << "\n"
-      << "peak force within 3 % of the Considere estimate 79.7 kN: "
-      << Testing::yes_no(std::abs(peak / 79.7e3 - 1.) < 0.03) << "\n"
+      << "peak force within 1 % of Considere's 76.9 kN: "
+      << Testing::yes_no(std::abs(peak / 76.88e3 - 1.) < 0.01) << "\n"
       << "neck at mid-length (radius shrinks > 2x as at 3L/4): "
       << Testing::yes_no(shrink_mid > 2. * shrink_qtr) << "\n"
       << "alpha never decreases at yielding points: "
