@@ -40,10 +40,12 @@ namespace DuctileContact
 
   /**
    * Round bar along x in [0, L] with a linear taper to (1 - imperfection)
-   * times the radius at mid-length (validation rung 3): material id 0;
-   * boundary ids 0 = hull, 1 = end x = 0, 2 = end x = L. The hull is
-   * rounded while the coarse cylinder (5 cells per cross-section) is
-   * refined; the result becomes the coarse mesh of @p tria.
+   * times the radius at mid-length (validation rung 3): material id 0.
+   * Model full: boundary ids 0 = hull, 1 = end x = 0, 2 = end x = L;
+   * octant: the part x >= L/2, y >= 0, z >= 0 with ids 0 = hull, 2 = end,
+   * 3, 4, 5 = planes x = L/2, y = 0, z = 0. The hull carries a chart
+   * manifold of the tapered surface, the cells a transfinite interpolation
+   * (so refinement and a MappingQ(p) follow the exact geometry).
    */
   void
   create_round_bar_scene(const MeshParameters::RoundBar &parameters,
