@@ -506,8 +506,8 @@ namespace DuctileContact
         pair.master.update(u, discretisation);
         integrate(pair);
 
-        const ContactSurface &slave = pair.slave, &master = pair.master;
-        const unsigned int    ns = slave.nodes.size();
+        const ContactSurface &slave = pair.slave;
+        const unsigned int    ns    = slave.nodes.size();
         std::vector<bool>     needed(ns);
         for (unsigned int j = 0; j < ns; ++j)
           needed[j] = pair.nodal[j].active &&
