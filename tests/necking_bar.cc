@@ -58,8 +58,8 @@ subsection Output
   std::vector<double> F = t.at("F2_x");
   for (double &f : F)
     f *= 4.;
-  const std::size_t n = F.size();
-  std::size_t          k_max = 0;
+  const std::size_t n     = F.size();
+  std::size_t       k_max = 0;
   for (std::size_t k = 0; k < n; ++k)
     if (F[k] > F[k_max])
       k_max = k;
