@@ -13,6 +13,6 @@ def read_statistics(path):
 def wall_time(screen_path):
     """Total wall time [s] from the timer table at the end of screen.txt,
     None if the run did not finish."""
-    m = re.search(r"Total wallclock time elapsed since start\s*\|\s*([0-9.e+]+)s",
+    m = re.search(r"Total wallclock time elapsed since start\s*\|\s*([\d.e+-]+)s",
                   open(screen_path).read())
     return float(m.group(1)) if m else None

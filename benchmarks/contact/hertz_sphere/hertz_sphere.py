@@ -21,6 +21,9 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+from runs_io import read_statistics  # noqa: E402
+
 
 def axial_compression(d_over_a, nu, n=200):
     """integral_0^{d/a} -E eps_z / p0 d(z/a), by Gauss-Legendre in
@@ -55,12 +58,6 @@ def fit(nodes, a_hertz):
     A = np.vstack([np.ones(sel.sum()), r[sel] ** 2]).T
     c, *_ = np.linalg.lstsq(A, p[sel] ** 2, rcond=None)
     return math.sqrt(-c[0] / c[1]), math.sqrt(c[0])
-
-
-def read_statistics(path):
-    lines = [l for l in open(path).read().split("\n") if l.strip()]
-    names = lines[0].split()
-    return [dict(zip(names, map(float, l.split()))) for l in lines[1:]]
 
 
 def evaluate(directory, R=1.0, E=1e9, nu=0.3, d=0.02):

@@ -4,17 +4,15 @@ the die's drag F_x and normal force F_y against its travel, the friction /
 normal contact force ratio, Newton iterations. Usage: report.py DIR"""
 import math
 import os
-import re
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+from runs_io import read_statistics, wall_time  # noqa: E402
 
 here = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
 d = os.path.join(here, "runs")
-lines = [l for l in open(os.path.join(d, "statistics")).read().split("\n") if l.strip()]
-names = lines[0].split()
-rows = [dict(zip(names, map(float, l.split()))) for l in lines[1:]]
-screen = open(os.path.join(d, "screen.txt")).read()
-m = re.search(r"Total wallclock time elapsed since start\s*\|\s*([\d.e+-]+)s", screen)
-wall = float(m.group(1)) if m else float("nan")
+rows = read_statistics(os.path.join(d, "statistics"))
+wall = wall_time(os.path.join(d, "screen.txt")) or float("nan")
 
 
 def norm(r, what):

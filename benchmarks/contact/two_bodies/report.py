@@ -5,18 +5,17 @@ screen log with the timer table). Usage: report.py DIR"""
 import glob
 import math
 import os
-import re
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+from runs_io import read_statistics, wall_time  # noqa: E402
 
 here = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
 runs = {}
 for d in sorted(glob.glob(os.path.join(here, "runs", "*"))):
-    lines = [l for l in open(os.path.join(d, "statistics")).read().split("\n") if l.strip()]
-    names = lines[0].split()
-    rows = [dict(zip(names, map(float, l.split()))) for l in lines[1:]]
-    screen = open(os.path.join(d, "screen.txt")).read()
-    m = re.search(r"Total wallclock time elapsed since start\s*\|\s*([\d.e+-]+)s", screen)
-    runs[os.path.basename(d)] = dict(rows=rows, wall=float(m.group(1)) if m else float("nan"))
+    rows = read_statistics(os.path.join(d, "statistics"))
+    wall = wall_time(os.path.join(d, "screen.txt"))
+    runs[os.path.basename(d)] = dict(rows=rows, wall=wall or float("nan"))
 
 with open(os.path.join(here, "results.md"), "w") as out:
     out.write("| run | steps | Newton iterations (all) | per step, mean / last 20 | multiplier updates | "

@@ -3,23 +3,22 @@
 from runs/ (statistics of prm/sent_coarse.prm). Usage: report.py DIR"""
 import glob
 import os
-import re
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+from runs_io import read_statistics, wall_time  # noqa: E402
 
 here = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
 runs = os.path.join(here, "runs")
 thickness, g_c, ligament = 2.5e-5, 2700.0, 0.5e-3  # m, J/m^2, m
 
-lines = [l for l in open(os.path.join(runs, "statistics")).read().split("\n") if l.strip()]
-names = lines[0].split()
-rows = [dict(zip(names, map(float, l.split()))) for l in lines[1:]]
+rows = read_statistics(os.path.join(runs, "statistics"))
 u = [r["u2_y"] * 1e3 for r in rows]  # mm
 F = [r["F2_y"] / thickness * 1e-6 for r in rows]  # kN/mm per unit thickness
 peak = max(range(len(F)), key=lambda i: F[i])
 last = rows[-1]
-screen = open(os.path.join(runs, "screen.txt")).read()
-wall = re.search(r"Total wallclock time elapsed since start\s*\|\s*([\d.e+-]+)s", screen)
+wall = wall_time(os.path.join(runs, "screen.txt"))
 with open(os.path.join(here, "results.md"), "w") as out:
     out.write("| quantity | value |\n|---|---|\n")
     out.write(f"| peak force F_max [kN/mm] | {F[peak]:.5f} at u = {u[peak]:.5f} mm (t = {rows[peak]['time']:.4f}) |\n")
@@ -34,7 +33,7 @@ with open(os.path.join(here, "results.md"), "w") as out:
     out.write(f"| load steps, Newton iterations, cut-backs | {len(rows) - 1}, "
               f"{sum(int(r['newton_iterations']) for r in rows)}, {sum(int(r['cutbacks']) for r in rows)} |\n")
     if wall:
-        out.write(f"| wall time [s] | {float(wall.group(1)):.0f} |\n")
+        out.write(f"| wall time [s] | {wall:.0f} |\n")
 print(open(os.path.join(here, "results.md")).read())
 try:
     import matplotlib
