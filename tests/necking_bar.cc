@@ -35,9 +35,12 @@ main(int argc, char **argv)
   // Coarse mesh, fewer steps; probes on the hull (in the plane z = 0) at
   // mid-length and half-way to the end.
   const double R = 6.413e-3, L = 53.334e-3, e = 0.018;
-  const auto   hull_point = [&](const double x) {
-    const double f = 1. - e * (1. - std::abs(2. * x / L - 1.));
-    return std::to_string(x) + ", " + std::to_string(0.9998 * f * R) + ", 0";
+  // Just inside the hull at x: 0.9998 times the tapered radius.
+  const auto probe_y = [&](const double x) {
+    return 0.9998 * (1. - e * (1. - std::abs(2. * x / L - 1.))) * R;
+  };
+  const auto hull_point = [&](const double x) {
+    return std::to_string(x) + ", " + std::to_string(probe_y(x)) + ", 0";
   };
   prm << R"(
 subsection Mesh
@@ -68,8 +71,7 @@ subsection Output
   const auto radius = [&](const unsigned int probe, const std::size_t k) {
     const std::string p = "probe" + std::to_string(probe) + "_u_";
     const double      x = probe == 1 ? 0.5 * L : 0.75 * L;
-    const double      f = 1. - e * (1. - std::abs(2. * x / L - 1.));
-    return 1. + t.at(p + "y")[k] / (0.9998 * f * R);
+    return 1. + t.at(p + "y")[k] / probe_y(x);
   };
   const double shrink_mid = 1. - radius(1, n - 1);
   const double shrink_qtr = 1. - radius(2, n - 1);

@@ -437,12 +437,8 @@ namespace DuctileContact
         last_increment = u;
         last_increment -= u_old;
         last_dt = dt_try;
-        {
-          TrilinosWrappers::MPI::BlockVector du = u;
-          du -= u_old;
-          external_work +=
-            0.5 * (internal_force * du + previous_internal_force * du);
-        }
+        external_work += 0.5 * (internal_force * last_increment +
+                                previous_internal_force * last_increment);
         previous_internal_force = internal_force;
         committed               = commit(step_data);
         if (contact)

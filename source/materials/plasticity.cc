@@ -43,6 +43,15 @@ namespace DuctileContact
              p.linear_hardening * alpha;
     }
 
+    /// yhat'(alpha) of (21).
+    double
+    hardening_slope_of(const double alpha, const PlasticityParameters &p)
+    {
+      return (p.saturation_yield - p.initial_yield) * p.saturation_exponent *
+               std::exp(-p.saturation_exponent * alpha) +
+             p.linear_hardening;
+    }
+
     template <typename Number>
     struct Evaluation
     {
@@ -130,11 +139,9 @@ namespace DuctileContact
       else
         {
           // Hold alpha at alpha_n with the yielding branch's slope.
-          const double slope =
-            (p.saturation_yield - p.initial_yield) * p.saturation_exponent *
-              std::exp(-p.saturation_exponent * history_n.alpha) +
-            p.linear_hardening;
-          e.r += (mu_g * trace(b_bar_tr) + slope) * (alpha - history_n.alpha);
+          e.r +=
+            (mu_g * trace(b_bar_tr) + hardening_slope_of(history_n.alpha, p)) *
+            (alpha - history_n.alpha);
         }
       return e;
     }

@@ -71,13 +71,14 @@ namespace DuctileContact
         return d;
       }
 
-    private:
+      /// f(x): the radius at x over R.
       double
       taper(const double x) const
       {
         return 1. - imperfection * (1. - std::abs(2. * x / length - 1.));
       }
 
+    private:
       double
       taper_slope(const double x) const
       {
@@ -102,6 +103,13 @@ namespace DuctileContact
     // hull into the cells; the end and symmetry faces stay plane).
     // (Faces, not boundary ids of lines: the lines inside the symmetry
     // planes carry the default boundary id 0 as well.)
+    // The hull chart on id 0, transfinite interpolation on id 1.
+    const auto attach_manifolds = [&hull](Triangulation<dim> &mesh) {
+      mesh.set_manifold(0, hull);
+      TransfiniteInterpolationManifold<dim> interior;
+      interior.initialize(mesh);
+      mesh.set_manifold(1, interior);
+    };
     const auto set_manifold_ids = [](Triangulation<dim> &mesh) {
       mesh.set_all_manifold_ids(1);
       for (const auto &cell : mesh.active_cell_iterators())
@@ -121,9 +129,8 @@ namespace DuctileContact
                                        0.5 * L);
     GridTools::transform(
       [&](const Point<dim> &p) {
-        const double f =
-          1. - parameters.imperfection * (1. - std::abs(p[0]) / (0.5 * L));
-        return Point<dim>(p[0] + 0.5 * L, f * p[1], f * p[2]);
+        const double x = p[0] + 0.5 * L, f = hull.taper(x);
+        return Point<dim>(x, f * p[1], f * p[2]);
       },
       coarse);
     set_manifold_ids(coarse);
@@ -135,10 +142,7 @@ namespace DuctileContact
         // octant; those of x >= L/2, y >= 0, z >= 0 become the coarse mesh.
         Triangulation<dim> refined;
         refined.copy_triangulation(coarse);
-        refined.set_manifold(0, hull);
-        TransfiniteInterpolationManifold<dim> interior;
-        interior.initialize(refined);
-        refined.set_manifold(1, interior);
+        attach_manifolds(refined);
         refined.refine_global(1);
         --refinements;
 
@@ -178,10 +182,7 @@ namespace DuctileContact
     for (const auto &cell : coarse.active_cell_iterators())
       cell->set_material_id(0);
     tria.copy_triangulation(coarse);
-    tria.set_manifold(0, hull);
-    TransfiniteInterpolationManifold<dim> interior;
-    interior.initialize(tria);
-    tria.set_manifold(1, interior);
+    attach_manifolds(tria);
     tria.refine_global(refinements);
   }
 } // namespace DuctileContact

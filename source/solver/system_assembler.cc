@@ -316,8 +316,7 @@ namespace DuctileContact
                                alpha[q] - history_n[q]->plastic.alpha);
                   info.hardening_energy +=
                     (integrated_hardening(alpha[q], plastic) +
-                     0.5 * plastic.initial_yield * l_p * l_p *
-                       grad_alpha[q].norm_square()) *
+                     0.5 * gradient_coefficient * grad_alpha[q].norm_square()) *
                     JxW;
                   // Plastic work of the step: the elastic energy the flow
                   // C^p_n -> C^p releases, averaged over F_n and F (second
