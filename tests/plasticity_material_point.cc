@@ -3,6 +3,10 @@
 //  1. the tangents dP/dF, dP/dalpha, dP/ds, dr/dF, dr/dalpha, dr/ds equal
 //     central finite differences (relative 1e-6) in plastic states with
 //     damage s = 0.3 and a prior plastic history;
+//     the same with the tension/compression switch of the split (17)
+//     blended over |J - 1| < delta = 0.05 (Volumetric switch width), with
+//     samples inside the blend; in both, P is the derivative of the
+//     elastic energy Psi^e(F, (C^p_{n+1})^{-1}) (central differences);
 //  2. det (C^p)^{-1} = 1 to round-off after plastic steps;
 //  3. uniaxial stress (lateral stretch from tau_yy = 0, alpha from the
 //     local hardening equation r = 0 by Newton with dr/dalpha) with a
@@ -50,79 +54,101 @@ main()
   out << std::setprecision(6);
   PlasticityParameters p; // mu = 1, kappa = 2.5, y0 = 0.005, y_inf = 0.006
 
-  // 1. and 2.: tangents and incompressibility in random plastic states.
-  {
-    std::mt19937                           gen(7);
-    std::uniform_real_distribution<double> d(-1., 1.);
-    double                                 worst = 0, det_error = 0;
-    unsigned int                           plastic = 0;
-    for (unsigned int sample = 0; sample < 20; ++sample)
-      {
-        PlasticHistory h;
-        Tensor<2, dim> Fp = unit_symmetric_tensor<dim>();
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            Fp[i][j] += 0.01 * d(gen);
-        Fp /= std::cbrt(determinant(Fp));
-        h.Cp_inv         = symmetrize(invert(transpose(Fp) * Fp));
-        h.alpha          = 0.01;
-        Tensor<2, dim> F = unit_symmetric_tensor<dim>();
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            F[i][j] += 0.03 * d(gen);
-        const double          alpha = h.alpha + 0.002 * (1.2 + d(gen));
-        const double          s = 0.3, dt = 0.1;
-        const PlasticResponse r = plastic_update(F, h, alpha, s, dt, p, true);
-        if (!r.yielding)
-          continue;
-        ++plastic;
-        det_error =
-          std::max(det_error, std::abs(determinant(r.updated.Cp_inv) - 1.));
+  // 1. and 2.: tangents and incompressibility in random plastic states,
+  // with the sharp and the blended switch of (17).
+  for (const double delta : {0., 0.05})
+    {
+      p.volumetric_switch_width = delta;
+      std::mt19937                           gen(7);
+      std::uniform_real_distribution<double> d(-1., 1.);
+      double       worst = 0, det_error = 0, energy_error = 0;
+      unsigned int plastic = 0, blended = 0;
+      for (unsigned int sample = 0; sample < 40; ++sample)
+        {
+          PlasticHistory h;
+          Tensor<2, dim> Fp = unit_symmetric_tensor<dim>();
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              Fp[i][j] += 0.01 * d(gen);
+          Fp /= std::cbrt(determinant(Fp));
+          h.Cp_inv         = symmetrize(invert(transpose(Fp) * Fp));
+          h.alpha          = 0.01;
+          Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              F[i][j] += 0.03 * d(gen);
+          const double          alpha = h.alpha + 0.002 * (1.2 + d(gen));
+          const double          s = 0.3, dt = 0.1;
+          const PlasticResponse r = plastic_update(F, h, alpha, s, dt, p, true);
+          if (!r.yielding)
+            continue;
+          ++plastic;
+          if (std::abs(r.J - 1.) < delta)
+            ++blended;
+          det_error =
+            std::max(det_error, std::abs(determinant(r.updated.Cp_inv) - 1.));
 
-        const double eps  = 1e-6;
-        double       diff = 0, norm = 0;
-        const auto   add = [&](const double fd, const double exact) {
-          diff += (fd - exact) * (fd - exact);
-          norm += exact * exact;
-        };
-        for (unsigned int c = 0; c < dim; ++c)
-          for (unsigned int D = 0; D < dim; ++D)
-            {
-              Tensor<2, dim> Fp1 = F, Fm1 = F;
-              Fp1[c][D] += eps;
-              Fm1[c][D] -= eps;
-              const auto rp = plastic_update(Fp1, h, alpha, s, dt, p, false);
-              const auto rm = plastic_update(Fm1, h, alpha, s, dt, p, false);
-              for (unsigned int a = 0; a < dim; ++a)
-                for (unsigned int B = 0; B < dim; ++B)
-                  add((rp.P[a][B] - rm.P[a][B]) / (2 * eps),
-                      r.dP_dF[a][B][c][D]);
-              add((rp.r - rm.r) / (2 * eps), r.dr_dF[c][D]);
-            }
-        const double ea = 1e-7;
-        const auto   ap = plastic_update(F, h, alpha + ea, s, dt, p, false);
-        const auto   am = plastic_update(F, h, alpha - ea, s, dt, p, false);
-        const auto   sp = plastic_update(F, h, alpha, s + eps, dt, p, false);
-        const auto   sm = plastic_update(F, h, alpha, s - eps, dt, p, false);
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int B = 0; B < dim; ++B)
-            {
-              add((ap.P[a][B] - am.P[a][B]) / (2 * ea), r.dP_dalpha[a][B]);
-              add((sp.P[a][B] - sm.P[a][B]) / (2 * eps), r.dP_ds[a][B]);
-            }
-        add((ap.r - am.r) / (2 * ea), r.dr_dalpha);
-        add((sp.r - sm.r) / (2 * eps), r.dr_ds);
-        worst = std::max(worst, std::sqrt(diff / norm));
-      }
-    out << "plastic samples: " << (plastic >= 10 ? "at least 10" : "too few")
-        << std::endl;
-    out << "tangents equal central differences (1e-6): "
-        << Testing::yes_no(worst < 1e-6) << std::endl;
-    out << "det (C^p)^-1 = 1 to round-off (1e-14): "
-        << Testing::yes_no(det_error < 1e-14) << std::endl;
-    std::cout << "worst tangent error " << worst << ", det error " << det_error
-              << std::endl;
-  }
+          const double eps  = 1e-6;
+          double       diff = 0, norm = 0, e_diff = 0, e_norm = 0;
+          const auto   add = [&](const double fd, const double exact) {
+            diff += (fd - exact) * (fd - exact);
+            norm += exact * exact;
+          };
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int D = 0; D < dim; ++D)
+              {
+                Tensor<2, dim> Fp1 = F, Fm1 = F;
+                Fp1[c][D] += eps;
+                Fm1[c][D] -= eps;
+                const auto rp = plastic_update(Fp1, h, alpha, s, dt, p, false);
+                const auto rm = plastic_update(Fm1, h, alpha, s, dt, p, false);
+                for (unsigned int a = 0; a < dim; ++a)
+                  for (unsigned int B = 0; B < dim; ++B)
+                    add((rp.P[a][B] - rm.P[a][B]) / (2 * eps),
+                        r.dP_dF[a][B][c][D]);
+                add((rp.r - rm.r) / (2 * eps), r.dr_dF[c][D]);
+                const double dpsi =
+                  (elastic_energy(Fp1, r.updated.Cp_inv, s, p) -
+                   elastic_energy(Fm1, r.updated.Cp_inv, s, p)) /
+                  (2 * eps);
+                e_diff += (dpsi - r.P[c][D]) * (dpsi - r.P[c][D]);
+                e_norm += r.P[c][D] * r.P[c][D];
+              }
+          const double ea = 1e-7;
+          const auto   ap = plastic_update(F, h, alpha + ea, s, dt, p, false);
+          const auto   am = plastic_update(F, h, alpha - ea, s, dt, p, false);
+          const auto   sp = plastic_update(F, h, alpha, s + eps, dt, p, false);
+          const auto   sm = plastic_update(F, h, alpha, s - eps, dt, p, false);
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int B = 0; B < dim; ++B)
+              {
+                add((ap.P[a][B] - am.P[a][B]) / (2 * ea), r.dP_dalpha[a][B]);
+                add((sp.P[a][B] - sm.P[a][B]) / (2 * eps), r.dP_ds[a][B]);
+              }
+          add((ap.r - am.r) / (2 * ea), r.dr_dalpha);
+          add((sp.r - sm.r) / (2 * eps), r.dr_ds);
+          worst        = std::max(worst, std::sqrt(diff / norm));
+          energy_error = std::max(energy_error, std::sqrt(e_diff / e_norm));
+        }
+      out << (delta == 0. ? "sharp switch of (17)" : "blended switch of (17)")
+          << std::endl;
+      out << "plastic samples: " << (plastic >= 10 ? "at least 10" : "too few")
+          << std::endl;
+      if (delta > 0.)
+        out << "samples inside the blend: "
+            << (blended >= 3 ? "at least 3" : "too few") << std::endl;
+      out << "P = dPsi^e/dF (1e-6): " << Testing::yes_no(energy_error < 1e-6)
+          << std::endl;
+      out << "tangents equal central differences (1e-6): "
+          << Testing::yes_no(worst < 1e-6) << std::endl;
+      out << "det (C^p)^-1 = 1 to round-off (1e-14): "
+          << Testing::yes_no(det_error < 1e-14) << std::endl;
+      std::cout << "delta " << delta << ": " << plastic << " plastic, "
+                << blended << " blended samples; worst tangent error " << worst
+                << ", energy error " << energy_error << ", det error "
+                << det_error << std::endl;
+    }
+  p.volumetric_switch_width = 0.;
 
   // 3. Uniaxial stress, nearly rate independent, against the small-strain
   // reference; overstress against eta_p.

@@ -18,11 +18,12 @@ namespace DuctileContact
   PlasticityParameters
   BodyParameters::material() const
   {
-    PlasticityParameters p = plastic;
-    p.shear_modulus        = shear_modulus;
-    p.bulk_modulus         = bulk_modulus;
-    p.degradation_a        = crack.degradation_a;
-    p.residual_stiffness   = crack.residual_stiffness;
+    PlasticityParameters p    = plastic;
+    p.shear_modulus           = shear_modulus;
+    p.bulk_modulus            = bulk_modulus;
+    p.degradation_a           = crack.degradation_a;
+    p.residual_stiffness      = crack.residual_stiffness;
+    p.volumetric_switch_width = crack.volumetric_switch_width;
     return p;
   }
 
@@ -117,6 +118,17 @@ namespace DuctileContact
                       "bi-Laplacian; 0 selects the default 1.5 p (p + 1) "
                       "(see phase_field/c0ip.h for why not p (p + 1)).",
                       Patterns::Double(0.));
+    prm.add_parameter(
+      "Volumetric switch width",
+      crack.volumetric_switch_width,
+      "delta [-]: the volumetric energy of the split (17) degrades with "
+      "g(s) for J > 1 and not for J < 1; with delta > 0 the switch is "
+      "blended smoothly (C2) over 1 - delta < J < 1 + delta, so that the "
+      "tangent has no jump at J = 1 (Newton's line search fails at the "
+      "jumps once many damaged points sit near J = 1, e.g. in the ductile "
+      "notch). Bodies with plasticity only; 0 is the sharp switch of "
+      "model.md.",
+      Patterns::Double(0., 0.1));
     prm.leave_subsection();
     prm.leave_subsection();
   }
@@ -173,6 +185,11 @@ namespace DuctileContact
                     f + "Residual stiffness",
                     value(crack.residual_stiffness),
                     "0 <= k < 1");
+        check_input(plasticity || crack.volumetric_switch_width == 0.,
+                    f + "Volumetric switch width",
+                    value(crack.volumetric_switch_width),
+                    "0 for a body without plasticity (the smoothed switch is "
+                    "implemented for the elastic-plastic law only)");
       }
   }
 } // namespace DuctileContact

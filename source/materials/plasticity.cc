@@ -43,6 +43,37 @@ namespace DuctileContact
              p.linear_hardening * alpha;
     }
 
+    /// Weight w(J) of the tension form of the split (17): the sharp switch
+    /// J > 1, or its C2 blend over |J - 1| < delta.
+    template <typename Number>
+    Number
+    tension_weight(const Number &J, const double delta)
+    {
+      if (delta == 0.)
+        return Number(value_of(J) > 1. ? 1. : 0.);
+      const double x0 = (value_of(J) - 1. + delta) / (2. * delta);
+      if (x0 <= 0.)
+        return Number(0.);
+      if (x0 >= 1.)
+        return Number(1.);
+      const Number x = (J - 1. + delta) / (2. * delta);
+      return x * x * x * (10. + x * (-15. + 6. * x));
+    }
+
+    /// dw/dJ of tension_weight() (0 outside the blend).
+    template <typename Number>
+    Number
+    tension_weight_slope(const Number &J, const double delta)
+    {
+      if (delta == 0.)
+        return Number(0.);
+      const double x0 = (value_of(J) - 1. + delta) / (2. * delta);
+      if (x0 <= 0. || x0 >= 1.)
+        return Number(0.);
+      const Number x = (J - 1. + delta) / (2. * delta);
+      return 30. * x * x * (1. - x) * (1. - x) / (2. * delta);
+    }
+
     /// yhat'(alpha) of (21).
     double
     hardening_slope_of(const double alpha, const PlasticityParameters &p)
@@ -84,7 +115,8 @@ namespace DuctileContact
       e.J                = determinant(F);
       const Number J23   = std::pow(e.J, -2. / 3.);
       const Number g_dev = degradation_of(s, p);
-      const Number g_vol = value_of(e.J) > 1. ? g_dev : Number(1.);
+      const Number w     = tension_weight(e.J, p.volumetric_switch_width);
+      const Number g_vol = 1. + w * (g_dev - 1.);
 
       // 1. Trial state and yield check (chi_p from values only).
       const SymmetricTensor<2, dim, Number> Cp_inv_n(history_n.Cp_inv);
@@ -103,13 +135,13 @@ namespace DuctileContact
       // 2. Plastic flow from the current alpha of the global field, at
       // every point and not clamped at alpha < alpha_n (see the header).
       e.Cp_inv = Cp_inv_n;
+      SymmetricTensor<2, dim, Number> n_tr;
       if (value_of(norm_tr) > 0.)
         {
           const Number lambda = std::sqrt(1.5) * (alpha - history_n.alpha) / dt;
-          const Tensor<2, dim, Number>          F_inv        = invert(F);
-          const Number                          inverse_norm = 1. / norm_tr;
-          const SymmetricTensor<2, dim, Number> n_tr =
-            inverse_norm * tau_dev_tr;
+          const Tensor<2, dim, Number> F_inv        = invert(F);
+          const Number                 inverse_norm = 1. / norm_tr;
+          n_tr                                      = inverse_norm * tau_dev_tr;
           const Number factor = (2. / 3.) * dt * lambda * trace(b_tr);
           e.Cp_inv -= factor * symmetrize(F_inv * Tensor<2, dim, Number>(n_tr) *
                                           transpose(F_inv));
@@ -123,19 +155,28 @@ namespace DuctileContact
         J23 * push_forward(F, e.Cp_inv);
       const Number                          tr_b    = trace(b_bar);
       const SymmetricTensor<2, dim, Number> tau_dev = mu_g * deviator(b_bar);
-      const Number pressure_part = kappa * g_vol * (e.J * e.J - e.J);
+      // J dPsi^e/dJ of g_vol(J, s) kappa/2 (J - 1)^2 (the w'(J) term only
+      // inside the blend).
+      const Number pressure_part =
+        kappa * g_vol * (e.J * e.J - e.J) +
+        e.J * tension_weight_slope(e.J, p.volumetric_switch_width) *
+          (g_dev - 1.) * 0.5 * kappa * (e.J - 1.) * (e.J - 1.);
       e.tau = pressure_part * unit_symmetric_tensor<dim, Number>() + tau_dev;
       e.P   = Tensor<2, dim, Number>(e.tau) * transpose(invert(F));
       const Number vol = 0.5 * kappa * (e.J - 1.) * (e.J - 1.);
       const Number dev = 0.5 * mu * (tr_b - 3.);
       e.psi_elastic    = g_vol * vol + g_dev * dev;
-      e.psi_plus       = (value_of(e.J) > 1. ? vol : Number(0.)) + dev;
+      e.psi_plus       = w * vol + dev;
 
       // Local part of (50).
       e.r = p.viscosity * (alpha - history_n.alpha) / dt;
       if (e.yielding)
-        e.r += hardening_of(alpha, p) -
-               std::sqrt(1.5) * std::sqrt(tau_dev * tau_dev);
+        // The stress along the trial direction n_tr (tau_dev stays parallel
+        // to it), not |tau_dev|: sqrt(3/2) |tau_dev| = yhat(alpha) has a
+        // second root where the flow overshoots and reverses tau_dev, a
+        // spurious equilibrium that Newton found in the late neck of the
+        // necking bar (force drop within one step while alpha stood still).
+        e.r += hardening_of(alpha, p) - std::sqrt(1.5) * (n_tr * tau_dev);
       else
         {
           // Hold alpha at alpha_n with the yielding branch's slope.
@@ -165,8 +206,9 @@ namespace DuctileContact
   {
     const double J     = determinant(F);
     const double g_dev = degradation_of(s, p);
-    const double g_vol = J > 1. ? g_dev : 1.;
-    const double tr_b  = std::pow(J, -2. / 3.) * trace(push_forward(F, Cp_inv));
+    const double g_vol =
+      1. + tension_weight(J, p.volumetric_switch_width) * (g_dev - 1.);
+    const double tr_b = std::pow(J, -2. / 3.) * trace(push_forward(F, Cp_inv));
     return g_vol * 0.5 * p.bulk_modulus * (J - 1.) * (J - 1.) +
            g_dev * 0.5 * p.shear_modulus * (tr_b - 3.);
   }

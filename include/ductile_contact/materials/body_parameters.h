@@ -27,6 +27,9 @@ namespace DuctileContact
     double residual_stiffness = 1.e-8;
     /// gamma_IP of the C0IP face terms; 0 selects 1.5 p (p + 1).
     double interior_penalty = 0.;
+    /// delta: half-width in J of the smoothed tension/compression switch
+    /// of the split (17) (bodies with plasticity; 0: the sharp switch).
+    double volumetric_switch_width = 0.;
   };
 
   /**

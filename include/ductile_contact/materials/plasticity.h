@@ -25,6 +25,8 @@ namespace DuctileContact
     double viscosity           = 1e-3;  ///< eta_p in (34)
     double degradation_a       = 2.;    ///< a_g in g(s)
     double residual_stiffness  = 1e-8;  ///< k in g_k(s)
+    /// delta of the smoothed switch of (17); 0: sharp (see plastic_update)
+    double volumetric_switch_width = 0.;
   };
 
   /// Saturation hardening yhat(alpha), model.md (21).
@@ -56,7 +58,7 @@ namespace DuctileContact
   /**
    * Result of plastic_update(). r is the local part of the hardening
    * equation (50) per unit volume, r = eta_p (alpha - alpha_n)/dt +
-   * chi_p (yhat(alpha) - sqrt(3/2) |tau_dev|) (the gradient term
+   * chi_p (yhat(alpha) - sqrt(3/2) n_tr : tau_dev) (the gradient term
    * y_0 l_p^2 grad alpha . grad dalpha is added by the assembly).
    */
   struct PlasticResponse
@@ -89,9 +91,18 @@ namespace DuctileContact
    * alpha_n)/dt and
    *   (C^p)^{-1} = (C^p_n)^{-1} - 2/3 dt lambda_p tr[b_tr] F^{-1} n_tr F^{-T},
    * rescaled to determinant 1 (plastic incompressibility to round-off);
-   * finally tau = kappa g_vol(s) (J^2 - J) I + mu g_dev(s) dev[bbar^e].
+   * finally tau = J dPsi^e/dJ I + mu g_dev(s) dev[bbar^e] with Psi^e of
+   * (16): g_vol(J, s) = 1 + w(J) (g(s) - 1), w = 1 for J > 1 and 0 below
+   * (17), or, with volumetric_switch_width delta > 0, the C2 step
+   * w = 6x^5 - 15x^4 + 10x^3, x = (J - 1 + delta)/(2 delta) clipped to
+   * [0, 1], so that the tangent does not jump at J = 1; psi^+ = psi_dev +
+   * w psi_vol.
    * r is the local part of (50): eta_p (alpha - alpha_n)/dt + yhat(alpha) -
-   * sqrt(3/2) |tau_dev| where chi_p = 1.
+   * sqrt(3/2) n_tr : tau_dev where chi_p = 1, with n_tr = dev tau_tr /
+   * |dev tau_tr|. The flow keeps tau_dev parallel to n_tr, so n_tr : tau_dev
+   * is |tau_dev| as long as the flow does not overshoot; unlike |tau_dev| it
+   * falls monotonically with alpha, so r has one root (with |tau_dev| a
+   * second, spurious one has tau_dev reversed).
    *
    * Our choices where (50) and section 3 leave the discretisation open
    * (found on the necking bar, whose Newton iteration cycled or stalled at
