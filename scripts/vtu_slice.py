@@ -60,13 +60,10 @@ def pieces(path):
     return [path]
 
 
-def main():
-    path, field, out = sys.argv[1:4]
-    warp = float(sys.argv[4]) if len(sys.argv) > 4 else 0.0
-    title = sys.argv[5] if len(sys.argv) > 5 else f"{field}: {os.path.basename(path)}"
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+def draw(ax, path, field, warp=0.0, cmap="viridis"):
+    """Draws FIELD of a .pvtu/.vtu on the face z = z_min of its cells into
+    the matplotlib axes AX (displacement times WARP added); returns the
+    PolyCollection (for a colour bar)."""
     from matplotlib.collections import PolyCollection
 
     polygons, values = [], []
@@ -87,12 +84,24 @@ def main():
                          key=lambda v: a["points"][v, 2].max())
             polygons.append(x[bottom, :2])
             values.append(f[bottom].mean())
-    fig, ax = plt.subplots(figsize=(6, 5.4))
-    collection = PolyCollection(polygons, array=np.array(values), cmap="viridis",
+    collection = PolyCollection(polygons, array=np.array(values), cmap=cmap,
                                 edgecolors="none")
     ax.add_collection(collection)
     ax.autoscale()
     ax.set_aspect("equal")
+    return collection
+
+
+def main():
+    path, field, out = sys.argv[1:4]
+    warp = float(sys.argv[4]) if len(sys.argv) > 4 else 0.0
+    title = sys.argv[5] if len(sys.argv) > 5 else f"{field}: {os.path.basename(path)}"
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6, 5.4))
+    collection = draw(ax, path, field, warp)
     fig.colorbar(collection, ax=ax, label=field)
     ax.set_title(title, fontsize=9)
     ax.set_xlabel("x [m]")

@@ -13,11 +13,15 @@ around the notch tip, enough for the peak force as long as the damage zone
 at the peak stays inside the box (check: the peak must not change when the
 box grows).
 
-Physical tags: volume 1 (the specimen); surfaces 1 bottom (y = 0), 2 top
-(y = 1), 3 the slab faces z = 0 and z = t, 4 the left and right edges and
-the slit faces (traction free).
+HEIGHT (default 1 mm) makes a taller specimen [0, 1] x [0, HEIGHT] with the
+slit at mid-height y = HEIGHT/2 (the ductile notch: its plastic zone must
+not reach the grips).
 
-Usage: make_sent.py H BAND OUTPUT.msh [XEND]
+Physical tags: volume 1 (the specimen); surfaces 1 bottom (y = 0), 2 top
+(y = HEIGHT), 3 the slab faces z = 0 and z = t, 4 the left and right edges
+and the slit faces (traction free).
+
+Usage: make_sent.py H BAND OUTPUT.msh [XEND [HEIGHT]]
        (e.g. make_sent.py 0.0075 0.05 sent.msh)
 """
 import sys
@@ -28,6 +32,8 @@ h = float(sys.argv[1]) if len(sys.argv) > 1 else 0.0075
 band = float(sys.argv[2]) if len(sys.argv) > 2 else 0.05
 out = sys.argv[3] if len(sys.argv) > 3 else "sent.msh"
 x_end = float(sys.argv[4]) if len(sys.argv) > 4 else 1.0
+height = float(sys.argv[5]) if len(sys.argv) > 5 else 1.0
+y_mid = 0.5 * height
 mm = 1e-3
 thickness = h
 
@@ -64,12 +70,13 @@ x0 = 0.5 - band
 xs = graded(0.0, x0, h, False)[:-1] + uniform(x0, x_end, h)
 if x_end < 1.0 - 1e-12:
     xs += graded(x_end, 1.0, h, True)[1:]
-# y: uniform in the band around 0.5 (which is a grid line), graded outside
-ylo = graded(0.0, 0.5 - band, h, False)[:-1] + uniform(0.5 - band, 0.5, h)
-yhi = uniform(0.5, 0.5 + band, h)[1:] + graded(0.5 + band, 1.0, h, True)[1:]
+# y: uniform in the band around y_mid (a grid line), graded outside
+ylo = graded(0.0, y_mid - band, h, False)[:-1] + uniform(y_mid - band, y_mid, h)
+yhi = (uniform(y_mid, y_mid + band, h)[1:]
+       + graded(y_mid + band, height, h, True)[1:])
 ys = ylo + yhi
 zs = [0.0, thickness]
-j_slit = ys.index(0.5)
+j_slit = ys.index(y_mid)
 nx, ny = len(xs), len(ys)
 
 node_id = {}
@@ -120,4 +127,4 @@ write_gmsh(out,
            nodes, elements, digits=15)
 print(f"{out}: {len([e for e in elements if e[0] == 5])} hexahedra, "
       f"{len(nodes)} nodes, h = {h} mm for {0.5 - band} <= x <= {x_end}, "
-      f"|y - 0.5| <= {band}")
+      f"|y - {y_mid}| <= {band}")

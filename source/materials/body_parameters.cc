@@ -188,8 +188,8 @@ namespace DuctileContact
         check_input(plasticity || crack.volumetric_switch_width == 0.,
                     f + "Volumetric switch width",
                     value(crack.volumetric_switch_width),
-                    "0 for a body without plasticity (the smoothed switch is "
-                    "implemented for the elastic-plastic law only)");
+                    "it must be 0 for a body without plasticity (the smoothed "
+                    "switch is implemented for the elastic-plastic law only)");
       }
   }
 } // namespace DuctileContact
