@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Ductile notched plate (issue #4): the scene prm/ductile_notch.prm on
+# meshes with h = 0.05 mm (the scene's) and finer along the crack path
+# (prm/meshes/make_sent.py H 0.15 ... 1.0 HEIGHT with the scene's height),
+# and with the volumetric switch of (17) blended over delta = 5e-4, 1e-3
+# (the scene's) and 2e-3. report.py: force curve, peak force, displacement
+# where the crack has crossed the ligament, plastic work and crack energy
+# against run time; pictures of s and alpha.
+# Usage: benchmarks/plasticity/ductile_notch/run.sh [NP] [CASE ...]
+#   CASE = <h [mm]>:<delta>, default 0.05:1e-3 0.05:5e-4 0.05:2e-3
+#   0.035:1e-3 (about 10, 10, 10 and 25 min on 2 ranks). Cases with a
+#   finished run are skipped.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/../../../scripts/env.sh"
+np=${1:-2}
+shift || true
+cases=("$@")
+((${#cases[@]})) || cases=(0.05:1e-3 0.05:5e-4 0.05:2e-3 0.035:1e-3)
+exe="$build_dir/ductile-contact"
+[[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
+scene="$project_root/prm/ductile_notch.prm"
+height=$(sed -n 's/^# Specimen height: \([0-9.]*\) mm.*/\1/p' "$scene")
+
+for case in "${cases[@]}"; do
+  IFS=: read -r h delta <<< "$case"
+  name="h$h-delta$delta"
+  dir="$here/runs/$name"
+  if [[ -f "$dir/statistics" ]] && grep -q "Total wallclock" "$dir/screen.txt" 2>/dev/null; then
+    echo "== $name (done)"
+    continue
+  fi
+  mkdir -p "$dir"
+  /usr/bin/python3 "$project_root/prm/meshes/make_sent.py" "$h" 0.15 "$dir/mesh.msh" 1.0 "$height" > /dev/null
+  sed -e "s|set File name = .*|set File name = $dir/mesh.msh|" \
+    -e "s|set Volumetric switch width  *= .*|set Volumetric switch width = $delta|" \
+    -e "s|set Directory = .*|set Directory = $dir|" \
+    -e "s|set Interval  = .*|set Interval = 10|" \
+    "$scene" > "$dir/scene.prm"
+  echo "== $name"
+  (cd "$project_root" && mpirun -np "$np" "$exe" "$dir/scene.prm") > "$dir/screen.txt" 2>&1 ||
+    echo "   stopped early, see $dir/screen.txt"
+  grep -E "^step" "$dir/screen.txt" | tail -1 || true
+done
+/usr/bin/python3 "$here/report.py" "$here"
