@@ -101,8 +101,8 @@ namespace DuctileContact
    * sqrt(3/2) n_tr : tau_dev where chi_p = 1, with n_tr = dev tau_tr /
    * |dev tau_tr|. The flow keeps tau_dev parallel to n_tr, so n_tr : tau_dev
    * is |tau_dev| as long as the flow does not overshoot; unlike |tau_dev| it
-   * falls monotonically with alpha, so r has one root (with |tau_dev| a
-   * second, spurious one has tau_dev reversed).
+   * falls monotonically with alpha, so r has one root (with |tau_dev|
+   * there is a second, spurious root at which tau_dev is reversed).
    *
    * Our choices where (50) and section 3 leave the discretisation open
    * (found on the necking bar, whose Newton iteration cycled or stalled at
