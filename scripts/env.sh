@@ -9,3 +9,8 @@ export OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1
 export OMPI_MCA_btl_vader_single_copy_mechanism=none
 project_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-$project_root/build}
+# The application; benchmark scripts call require_build before running it.
+exe="$build_dir/ductile-contact"
+require_build() {
+  [[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
+}

@@ -10,8 +10,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../scripts/env.sh"
 max_amg=${1:-3}
 max_direct=${2:-2}
-exe="$build_dir/ductile-contact"
-[[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
+require_build
 
 run() { # solver refine np
   local name="$1-r$2-np$3" dir="$here/runs/$1-r$2-np$3"

@@ -10,8 +10,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 np=${1:-2}
-exe="$build_dir/ductile-contact"
-[[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
+require_build
 mkdir -p "$here/runs/meshes"
 for ratio in 2 4 8; do
   mesh="$here/runs/meshes/hertz_h$ratio.msh"

@@ -12,8 +12,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 np=${1:-2}
-exe="$build_dir/ductile-contact"
-[[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
+require_build
 mkdir -p "$here/runs/meshes"
 for case in 2:0.2 3:0.2 3:0.4 4:0.2; do
   ratio=${case%%:*} width=${case##*:}

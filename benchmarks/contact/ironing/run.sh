@@ -8,8 +8,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 np=${1:-1}
-exe="$build_dir/ductile-contact"
-[[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
+require_build
 dir="$here/runs"
 mkdir -p "$dir"
 sed -e "s|results/ironing|$dir|" -e "s|prm/meshes/ironing.msh|$project_root/prm/meshes/ironing.msh|" \

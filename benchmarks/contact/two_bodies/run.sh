@@ -10,8 +10,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 np=${1:-2}
-exe="$build_dir/ductile-contact"
-[[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
+require_build
 dir="$here/runs/consistent"
 mkdir -p "$dir"
 sed -e "s|results/two_bodies|$dir|" "$project_root/prm/two_bodies.prm" > "$dir/scene.prm"

@@ -14,8 +14,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 lf_mm=${1:-0.05}
 np=${2:-2}
-exe="$build_dir/ductile-contact"
-[[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
+require_build
 mkdir -p "$here/runs/meshes"
 lf=$(/usr/bin/python3 -c "print($lf_mm * 1e-3)")
 # End of loading (t = 1 is a top displacement of 1e-5 m = 0.01 mm): one step

@@ -17,8 +17,7 @@ np=${1:-2}
 shift || true
 cases=("$@")
 ((${#cases[@]})) || cases=(0.05:1e-3 0.05:5e-4 0.05:2e-3 0.035:1e-3)
-exe="$build_dir/ductile-contact"
-[[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
+require_build
 scene="$project_root/prm/ductile_notch.prm"
 height=$(sed -n 's/^# Specimen height: \([0-9.]*\) mm.*/\1/p' "$scene")
 

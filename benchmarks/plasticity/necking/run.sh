@@ -20,8 +20,7 @@ np=${1:-2}
 shift || true
 cases=("$@")
 ((${#cases[@]})) || cases=(10:1:1e-3 10:1:0 20:1:1e-3 20:1:0 40:1:1e-3 40:1:0 20:2:1e-3)
-exe="$build_dir/ductile-contact"
-[[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
+require_build
 
 # Hull points y = 0.9998 f(x) R, z = 0 for x = L/2 + k 0.5 mm, k = 0..24.
 probes=$(/usr/bin/python3 - <<'PY'
