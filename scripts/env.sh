@@ -14,3 +14,13 @@ exe="$build_dir/ductile-contact"
 require_build() {
   [[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
 }
+# Benchmark runs: DIR/scene.prm on NP ranks, screen output in DIR/screen.txt.
+# run_finished DIR: the run in DIR ended with its timer table (not redone).
+run_finished() {
+  [[ -f "$1/statistics" ]] && grep -q "Total wallclock" "$1/screen.txt" 2>/dev/null
+}
+# run_scene NP DIR: runs it; a run that stops early is reported, not fatal.
+run_scene() {
+  mpirun -np "$1" "$exe" "$2/scene.prm" > "$2/screen.txt" 2>&1 ||
+    echo "   stopped early, see $2/screen.txt"
+}

@@ -22,8 +22,7 @@ for ratio in 2 4 8; do
     sed -e "s|@MESH@|$mesh|" -e "s|@DIR@|$dir|" -e "s|@BASIS@|$basis|" \
       "$here/scene.prm.in" > "$dir/scene.prm"
     echo "== h = a/$ratio, $basis"
-    mpirun -np "$np" "$exe" "$dir/scene.prm" > "$dir/screen.txt" 2>&1 ||
-      echo "   failed, see $dir/screen.txt"
+    run_scene "$np" "$dir"
     rm -f "$dir"/*.vtu "$dir"/*.pvtu
   done
 done

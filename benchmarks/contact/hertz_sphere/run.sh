@@ -21,7 +21,7 @@ for case in 2:0.2 3:0.2 3:0.4 4:0.2; do
   [[ -f "$mesh" ]] || /usr/bin/python3 "$project_root/prm/meshes/make_hertz_sphere.py" \
     1 0.01 "$ratio" "$width" 1.5 "$mesh" > /dev/null
   dir="$here/runs/$name"
-  if [[ -f "$dir/statistics" ]] && grep -q "Total wallclock" "$dir/screen.txt"; then
+  if run_finished "$dir"; then
     echo "== $name (done)"
     continue
   fi
@@ -29,8 +29,7 @@ for case in 2:0.2 3:0.2 3:0.4 4:0.2; do
   sed -e "s|prm/meshes/hertz_sphere.msh|$mesh|" -e "s|results/hertz_sphere|$dir|" \
     "$project_root/prm/hertz_sphere.prm" > "$dir/scene.prm"
   echo "== $name"
-  mpirun -np "$np" "$exe" "$dir/scene.prm" > "$dir/screen.txt" 2>&1 ||
-    echo "   failed, see $dir/screen.txt"
+  run_scene "$np" "$dir"
   rm -f "$dir"/*.vtu "$dir"/*.pvtu
 done
 /usr/bin/python3 "$here/report.py" "$here"

@@ -16,7 +16,7 @@ mkdir -p "$here/runs"
 for n in ${SIZES:-4 8 16 24}; do
   low=$(( (3 * n + 3) / 4 ))
   dir="$here/runs/n$n"
-  if [[ -f "$dir/statistics" ]] && grep -q "Total wallclock" "$dir/screen.txt"; then
+  if run_finished "$dir"; then
     echo "== N = $n (done)"; continue
   fi
   mkdir -p "$dir"
@@ -28,8 +28,7 @@ for n in ${SIZES:-4 8 16 24}; do
   sed -e "s|@MESH@|$mesh|" -e "s|@DIR@|$dir|" -e "s|@SOLVER@|$solver|" \
     "$here/scene.prm.in" > "$dir/scene.prm"
   echo "== N = $n (master $low), $solver"
-  mpirun -np "$np" "$exe" "$dir/scene.prm" > "$dir/screen.txt" 2>&1 ||
-    echo "   failed, see $dir/screen.txt"
+  run_scene "$np" "$dir"
   rm -f "$mesh"
 done
 /usr/bin/python3 "$here/report.py" "$here"

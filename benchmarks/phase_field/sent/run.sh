@@ -57,8 +57,7 @@ run() { # degree h_over_lf strategy solver dt [box_over_lf]
     -e "s|@END@|$end|" -e "s|@ETA@|${ETA:-0}|" -e "s|@DIR@|$dir|" \
     "$here/scene.prm.in" > "$dir/scene.prm"
   echo "== $name"
-  mpirun -np "$np" "$exe" "$dir/scene.prm" > "$dir/screen.txt" 2>&1 ||
-    echo "   failed, see $dir/screen.txt"
+  run_scene "$np" "$dir"
   grep -E "DoFs|Total wallclock" "$dir/screen.txt" || true
 }
 

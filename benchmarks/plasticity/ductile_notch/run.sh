@@ -25,7 +25,7 @@ for case in "${cases[@]}"; do
   IFS=: read -r h delta <<< "$case"
   name="h$h-delta$delta"
   dir="$here/runs/$name"
-  if [[ -f "$dir/statistics" ]] && grep -q "Total wallclock" "$dir/screen.txt" 2>/dev/null; then
+  if run_finished "$dir"; then
     echo "== $name (done)"
     continue
   fi
@@ -37,8 +37,7 @@ for case in "${cases[@]}"; do
     -e "s|set Interval  = .*|set Interval = 10|" \
     "$scene" > "$dir/scene.prm"
   echo "== $name"
-  (cd "$project_root" && mpirun -np "$np" "$exe" "$dir/scene.prm") > "$dir/screen.txt" 2>&1 ||
-    echo "   stopped early, see $dir/screen.txt"
+  run_scene "$np" "$dir"
   grep -E "^step" "$dir/screen.txt" | tail -1 || true
 done
 /usr/bin/python3 "$here/report.py" "$here"

@@ -38,7 +38,7 @@ for case in "${cases[@]}"; do
   IFS=: read -r axial refine lp <<< "$case"
   name="a$axial-r$refine-lp$lp"
   dir="$here/runs/$name"
-  if [[ -f "$dir/statistics" ]] && grep -q "Total wallclock" "$dir/screen.txt" 2>/dev/null; then
+  if run_finished "$dir"; then
     echo "== $name (done)"
     continue
   fi
@@ -52,8 +52,7 @@ for case in "${cases[@]}"; do
     -e "s|set Probe points = .*|set Probe points = $probes|" \
     "$project_root/prm/necking_bar.prm" > "$dir/scene.prm"
   echo "== $name"
-  mpirun -np "$np" "$exe" "$dir/scene.prm" > "$dir/screen.txt" 2>&1 ||
-    echo "   stopped early, see $dir/screen.txt"
+  run_scene "$np" "$dir"
   grep -E "^step" "$dir/screen.txt" | tail -1 || true
 done
 /usr/bin/python3 "$here/report.py" "$here"
