@@ -25,6 +25,15 @@ namespace DuctileContact
                       "Alternations per load step before the step is cut "
                       "back (staggered and monolithic-staggered).",
                       Patterns::Integer(1, 100000));
+    prm.add_parameter(
+      "Staggered acceleration depth",
+      acceleration_depth,
+      "Anderson acceleration of the staggered alternation: the phase field "
+      "that the next (u, alpha) sub-solve starts from combines the last m+1 "
+      "phase-field solves so as to minimise the change of s over an "
+      "alternation (m = this depth; 0 = plain alternate minimisation). The "
+      "converged state is the same; it only takes fewer alternations.",
+      Patterns::Integer(0, 50));
     prm.leave_subsection();
   }
 

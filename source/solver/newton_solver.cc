@@ -5,6 +5,7 @@
 
 #include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/discretisation/constraints.h>
+#include <ductile_contact/solver/anderson_acceleration.h>
 #include <ductile_contact/solver/newton_solver.h>
 
 #include <algorithm>
@@ -265,9 +266,17 @@ namespace DuctileContact
     // alpha) fixed. Each sub-solve checks its fields before iterating, so
     // a sub-solve that needs no iteration shows that the state it starts
     // from meets the tolerances in every block: the coupled step is done.
+    // With acceleration, the phase field that the next mechanics sub-solve
+    // starts from is the Anderson combination of the last phase fields, no
+    // longer the one just solved for: then only a phase-field sub-solve
+    // that needs no iteration ends the step.
+    AndersonAcceleration          accelerate(coupling.acceleration_depth);
+    TrilinosWrappers::MPI::Vector s_iterate;
     for (unsigned int k = 1; k <= coupling.max_staggered_iterations; ++k)
       {
         total.staggered_iterations = k;
+        const bool s_accelerated   = k > 2 && coupling.acceleration_depth > 0;
+        s_iterate                  = u.block(Block::phase_field);
         for (const bool mechanics : {true, false})
           {
             const NewtonReport r =
@@ -288,7 +297,7 @@ namespace DuctileContact
                                 r.failure;
                 return total;
               }
-            if (r.iterations == 0 && (k > 1 || !mechanics))
+            if (r.iterations == 0 && (!mechanics || (k > 1 && !s_accelerated)))
               {
                 total.converged        = true;
                 total.convergence_rate = r.convergence_rate;
@@ -296,6 +305,7 @@ namespace DuctileContact
               }
             total.convergence_rate = r.convergence_rate;
           }
+        accelerate.update(s_iterate, u.block(Block::phase_field));
         verbose_out << "      staggered iteration " << k << " done"
                     << std::endl;
       }

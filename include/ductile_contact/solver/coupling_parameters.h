@@ -15,12 +15,18 @@ namespace DuctileContact
    *  - staggered: alternate minimisation, Newton on (u, alpha) with s fixed,
    *    then on s with (u, alpha) fixed, repeated until a sub-solve finds its
    *    fields already converged (so all blocks meet the Newton tolerances
-   *    at the same state, as in the monolithic scheme).
+   *    at the same state, as in the monolithic scheme); optionally with
+   *    Anderson acceleration of the phase field between alternations
+   *    (AndersonAcceleration);
+   *  - monolithic-staggered: monolithic, and a step where Newton fails is
+   *    redone staggered before it is cut back.
    */
   struct CouplingParameters
   {
     std::string  strategy                 = "monolithic";
     unsigned int max_staggered_iterations = 200;
+    /// Anderson depth m for the staggered phase field (0: plain).
+    unsigned int acceleration_depth = 0;
 
     void
     declare(dealii::ParameterHandler &prm);
