@@ -353,7 +353,8 @@ namespace DuctileContact
         tol[b] = parameters.relative_tolerance * info.residual_scale[b];
       return tol;
     };
-    const auto merit = [](const Norms &n, const Norms &tol) {
+    const char *block_names[] = {"u", "alpha", "s"};
+    const auto  merit         = [](const Norms &n, const Norms &tol) {
       double sum = 0;
       for (unsigned int b = 0; b < Block::n_blocks; ++b)
         if (tol[b] > 0.)
@@ -409,12 +410,11 @@ namespace DuctileContact
                   << (f_int_norm > 0 ? n[0] / f_int_norm : 0.);
       if (coupled)
         {
-          const char *names[] = {"u", "alpha", "s"};
-          const Norms tol     = tolerances(f_int_norm, info);
+          const Norms tol = tolerances(f_int_norm, info);
           verbose_out << "; in tolerances:";
           for (unsigned int b = 0; b < Block::n_blocks; ++b)
             if (!frozen[b] && discretisation.dofs_per_block[b] > 0)
-              verbose_out << " " << names[b] << " " << n[b] / tol[b];
+              verbose_out << " " << block_names[b] << " " << n[b] / tol[b];
         }
       verbose_out << (pending ? ", Dirichlet data pending" : "")
                   << std::defaultfloat << std::endl;
@@ -523,8 +523,15 @@ namespace DuctileContact
                         << (trial_info.inverted
                               ? std::string(" inverts an element")
                               : " does not reduce |R| (merit ratio " +
-                                  std::to_string(trial_r / r) + ")")
-                        << std::endl;
+                                  std::to_string(trial_r / r) + ";")
+                        << std::scientific << std::setprecision(2);
+            if (!trial_info.inverted)
+              for (unsigned int b = 0; b < Block::n_blocks; ++b)
+                if (tol[b] > 0. && n[b] > 0.)
+                  verbose_out << " " << block_names[b] << " "
+                              << trial_n[b] / n[b];
+            verbose_out << (trial_info.inverted ? "" : " by block)")
+                        << std::defaultfloat << std::endl;
           }
         if (!accepted)
           {

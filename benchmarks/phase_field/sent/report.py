@@ -66,7 +66,7 @@ for r in sorted(runs, key=lambda r: (r["dt"], r["degree"], r["ratio"], r["strate
     flag = "" if r["complete"] else " (incomplete)"
     out.write(f"| {r['name']}{flag} | {r['dofs']} | {r['peak']:.5f} | {r['u_peak']:.4g} | "
               f"{r['error']:.2e} | {r['steps']} | {r['newton']} | "
-              f"{r['stag'] if r['strategy'] == 'staggered' else '-'} | "
+              f"{r['stag'] if r['strategy'].startswith('staggered') else '-'} | "
               f"{r['linear'] / max(r['newton'], 1):.1f} | "
               f"{r['cutbacks']} | {r['assembly']:.1f} | {r['solve']:.1f} | {r['wall']:.1f} |\n")
 out.close()
