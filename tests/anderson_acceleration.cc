@@ -13,10 +13,10 @@
 
 #include <ductile_contact/solver/anderson_acceleration.h>
 
+#include "tests.h"
+
 #include <cmath>
 #include <functional>
-
-#include "tests.h"
 
 using namespace dealii;
 using namespace DuctileContact;
@@ -30,9 +30,9 @@ namespace
   /// x|_inf < tol; returns the steps (or max_steps + 1) and the last x.
   unsigned int
   iterate(const std::function<void(const PVector &, PVector &)> &map,
-          const unsigned int                                   depth,
-          const IndexSet                                      &owned,
-          PVector                                              &x)
+          const unsigned int                                     depth,
+          const IndexSet                                        &owned,
+          PVector                                               &x)
   {
     const unsigned int   max_steps = 20000;
     AndersonAcceleration accelerate(depth);
@@ -56,8 +56,8 @@ namespace
 
   /// Applies an entry-wise map to the owned entries.
   void
-  for_each_owned(const PVector                               &x,
-                 PVector                                     &image,
+  for_each_owned(const PVector                                 &x,
+                 PVector                                       &image,
                  const std::function<double(unsigned, double)> &f)
   {
     for (const auto i : x.locally_owned_elements())
@@ -107,9 +107,9 @@ main(int argc, char **argv)
 
   // 1. Depth 0 = plain.
   {
-    PVector             plain, zero_depth;
-    const unsigned int k_plain = iterate(linear, 0, owned, plain);
-    PVector             y(owned, MPI_COMM_WORLD), image(owned, MPI_COMM_WORLD);
+    PVector              plain, zero_depth;
+    const unsigned int   k_plain = iterate(linear, 0, owned, plain);
+    PVector              y(owned, MPI_COMM_WORLD), image(owned, MPI_COMM_WORLD);
     AndersonAcceleration none(0);
     for (unsigned int k = 1; k < k_plain; ++k)
       {
@@ -130,7 +130,7 @@ main(int argc, char **argv)
           "linear", linear},
         {"nonlinear", nonlinear}})
     {
-      PVector             plain, accelerated;
+      PVector            plain, accelerated;
       const unsigned int k_plain = iterate(map, 0, owned, plain);
       const unsigned int k_fast  = iterate(map, 5, owned, accelerated);
       std::cout << name << ": plain " << k_plain << " steps, Anderson(5) "
@@ -162,7 +162,7 @@ main(int argc, char **argv)
         return i == 0 ? 1. : eigenvalue(i) * std::cos(xi);
       });
     };
-    PVector               x(owned, MPI_COMM_WORLD), image(owned, MPI_COMM_WORLD);
+    PVector              x(owned, MPI_COMM_WORLD), image(owned, MPI_COMM_WORLD);
     AndersonAcceleration accelerate(5);
     double               worst = 0;
     for (unsigned int k = 0; k < 30; ++k)

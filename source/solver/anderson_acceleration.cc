@@ -9,7 +9,7 @@ namespace DuctileContact
   using namespace dealii;
 
   AndersonAcceleration::AndersonAcceleration(const unsigned int depth)
-    : depth(depth)
+      : depth(depth)
   {
   }
 
