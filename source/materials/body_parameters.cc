@@ -123,8 +123,10 @@ namespace DuctileContact
       crack.volumetric_switch_width,
       "delta [-]: the volumetric energy of the split (17) degrades with "
       "g(s) for J > 1 and not for J < 1; with delta > 0 the switch is "
-      "blended smoothly (C2) over 1 - delta < J < 1 + delta, so that the "
-      "tangent has no jump at J = 1 (Newton's line search fails at the "
+      "blended smoothly over 1 - delta < J < 1 + delta (the curvature of the "
+      "energy in J goes from kappa to g kappa along a C2 step; the energy "
+      "stays convex, the stress beyond the blend is the sharp one), so that "
+      "the tangent has no jump at J = 1 (Newton's line search fails at the "
       "jumps once many damaged points sit near J = 1, e.g. in the ductile "
       "notch). Bodies with plasticity only; 0 is the sharp switch of "
       "model.md.",

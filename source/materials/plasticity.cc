@@ -3,6 +3,8 @@
 #include <ductile_contact/materials/degradation.h>
 #include <ductile_contact/materials/plasticity.h>
 
+#include <utility>
+
 namespace DuctileContact
 {
   using namespace dealii;
@@ -43,35 +45,38 @@ namespace DuctileContact
              p.linear_hardening * alpha;
     }
 
-    /// Weight w(J) of the tension form of the split (17): the sharp switch
-    /// J > 1, or its C2 blend over |J - 1| < delta.
+    /**
+     * Tension part q(t) of the volumetric energy, t = J - 1, and q'(t):
+     * psi_vol^+ = kappa/2 q(t), psi_vol^- = kappa/2 (t^2 - q(t)), so that
+     * g psi_vol^+ + psi_vol^- = kappa/2 (t^2 - (1 - g) q(t)). Sharp (delta
+     * = 0): q = t^2 for t > 0, else 0 (model.md (17)). Blended: q'' = 2 w
+     * with the C2 step w(x) = 6x^5 - 15x^4 + 10x^3, x = (t + delta)/(2
+     * delta) in [0, 1]; integrated twice from q(-delta) = q'(-delta) = 0:
+     *   q  = 8 delta^2 x^5 (x^2/7 - x/2 + 1/2),
+     *   q' = 4 delta x^4 (x^2 - 3x + 5/2),
+     * and q = t^2 + delta^2/7, q' = 2t for t >= delta (w is symmetric about
+     * t = 0, so the stress beyond the blend is exactly the sharp one).
+     * Both q and t^2 - q are convex (q'' = 2w, 2 - q'' = 2(1 - w)), so the
+     * volumetric energy is convex in J for every g in [0, 1]. (Blending the
+     * weight instead, (1 - w(J)(1 - g)) kappa/2 t^2, is not: at g = 0 its
+     * curvature falls to about -kappa/4 near t = delta/2, a negative bulk
+     * modulus in the damaged points that sit at J ~ 1.)
+     */
     template <typename Number>
-    Number
-    tension_weight(const Number &J, const double delta)
+    std::pair<Number, Number>
+    tension_part(const Number &J, const double delta)
     {
-      if (delta == 0.)
-        return Number(value_of(J) > 1. ? 1. : 0.);
-      const double x0 = (value_of(J) - 1. + delta) / (2. * delta);
-      if (x0 <= 0.)
-        return Number(0.);
-      if (x0 >= 1.)
-        return Number(1.);
-      const Number x = (J - 1. + delta) / (2. * delta);
-      return x * x * x * (10. + x * (-15. + 6. * x));
-    }
-
-    /// dw/dJ of tension_weight() (0 outside the blend).
-    template <typename Number>
-    Number
-    tension_weight_slope(const Number &J, const double delta)
-    {
-      if (delta == 0.)
-        return Number(0.);
-      const double x0 = (value_of(J) - 1. + delta) / (2. * delta);
-      if (x0 <= 0. || x0 >= 1.)
-        return Number(0.);
-      const Number x = (J - 1. + delta) / (2. * delta);
-      return 30. * x * x * (1. - x) * (1. - x) / (2. * delta);
+      using Pair     = std::pair<Number, Number>;
+      const Number t = J - 1.;
+      if (value_of(t) <= -delta || (delta == 0. && value_of(t) <= 0.))
+        return Pair(Number(0.), Number(0.));
+      if (value_of(t) >= delta)
+        return Pair(Number(t * t + delta * delta / 7.), Number(2. * t));
+      const Number x  = (t + delta) / (2. * delta);
+      const Number x4 = x * x * x * x;
+      return Pair(Number(8. * delta * delta * x4 * x *
+                         (x * x / 7. - 0.5 * x + 0.5)),
+                  Number(4. * delta * x4 * (x * x - 3. * x + 2.5)));
     }
 
     /// yhat'(alpha) of (21).
@@ -115,8 +120,7 @@ namespace DuctileContact
       e.J                = determinant(F);
       const Number J23   = std::pow(e.J, -2. / 3.);
       const Number g_dev = degradation_of(s, p);
-      const Number w     = tension_weight(e.J, p.volumetric_switch_width);
-      const Number g_vol = 1. + w * (g_dev - 1.);
+      const auto [q, dq] = tension_part(e.J, p.volumetric_switch_width);
 
       // 1. Trial state and yield check (chi_p from values only).
       const SymmetricTensor<2, dim, Number> Cp_inv_n(history_n.Cp_inv);
@@ -155,18 +159,16 @@ namespace DuctileContact
         J23 * push_forward(F, e.Cp_inv);
       const Number                          tr_b    = trace(b_bar);
       const SymmetricTensor<2, dim, Number> tau_dev = mu_g * deviator(b_bar);
-      // J dPsi^e/dJ of g_vol(J, s) kappa/2 (J - 1)^2 (the w'(J) term only
-      // inside the blend).
+      // J dPsi^e/dJ of kappa/2 ((J - 1)^2 - (1 - g) q(J - 1)).
       const Number pressure_part =
-        kappa * g_vol * (e.J * e.J - e.J) +
-        e.J * tension_weight_slope(e.J, p.volumetric_switch_width) *
-          (g_dev - 1.) * 0.5 * kappa * (e.J - 1.) * (e.J - 1.);
+        kappa * e.J * ((e.J - 1.) - 0.5 * (1. - g_dev) * dq);
       e.tau = pressure_part * unit_symmetric_tensor<dim, Number>() + tau_dev;
       e.P   = Tensor<2, dim, Number>(e.tau) * transpose(invert(F));
-      const Number vol = 0.5 * kappa * (e.J - 1.) * (e.J - 1.);
-      const Number dev = 0.5 * mu * (tr_b - 3.);
-      e.psi_elastic    = g_vol * vol + g_dev * dev;
-      e.psi_plus       = w * vol + dev;
+      const Number vol_plus = 0.5 * kappa * q;
+      const Number vol      = 0.5 * kappa * (e.J - 1.) * (e.J - 1.);
+      const Number dev      = 0.5 * mu * (tr_b - 3.);
+      e.psi_elastic         = vol - (1. - g_dev) * vol_plus + g_dev * dev;
+      e.psi_plus            = vol_plus + dev;
 
       // Local part of (50).
       e.r = p.viscosity * (alpha - history_n.alpha) / dt;
@@ -206,10 +208,9 @@ namespace DuctileContact
   {
     const double J     = determinant(F);
     const double g_dev = degradation_of(s, p);
-    const double g_vol =
-      1. + tension_weight(J, p.volumetric_switch_width) * (g_dev - 1.);
+    const double q     = tension_part(J, p.volumetric_switch_width).first;
     const double tr_b = std::pow(J, -2. / 3.) * trace(push_forward(F, Cp_inv));
-    return g_vol * 0.5 * p.bulk_modulus * (J - 1.) * (J - 1.) +
+    return 0.5 * p.bulk_modulus * ((J - 1.) * (J - 1.) - (1. - g_dev) * q) +
            g_dev * 0.5 * p.shear_modulus * (tr_b - 3.);
   }
 

@@ -92,11 +92,15 @@ namespace DuctileContact
    *   (C^p)^{-1} = (C^p_n)^{-1} - 2/3 dt lambda_p tr[b_tr] F^{-1} n_tr F^{-T},
    * rescaled to determinant 1 (plastic incompressibility to round-off);
    * finally tau = J dPsi^e/dJ I + mu g_dev(s) dev[bbar^e] with Psi^e of
-   * (16): g_vol(J, s) = 1 + w(J) (g(s) - 1), w = 1 for J > 1 and 0 below
-   * (17), or, with volumetric_switch_width delta > 0, the C2 step
-   * w = 6x^5 - 15x^4 + 10x^3, x = (J - 1 + delta)/(2 delta) clipped to
-   * [0, 1], so that the tangent does not jump at J = 1; psi^+ = psi_dev +
-   * w psi_vol.
+   * (16)-(17): Psi^e = kappa/2 ((J - 1)^2 - (1 - g(s)) q(J - 1)) + g(s)
+   * mu/2 (tr bbar^e - 3), where q(t) = t^2 for t > 0 and 0 below (the
+   * sharp switch of (17): the volumetric part degrades in tension only),
+   * or, with volumetric_switch_width delta > 0, a smooth convex q with
+   * q'' = 2w, w the C2 step 6x^5 - 15x^4 + 10x^3 of x = (t + delta)/(2
+   * delta) in [0, 1]: the tangent does not jump at J = 1, the energy stays
+   * convex in J at every damage, and beyond |J - 1| >= delta the stress is
+   * the sharp one (the energy differs by the constant kappa/14 delta^2
+   * (1 - g) in tension); psi^+ = kappa/2 q(J - 1) + mu/2 (tr bbar^e - 3).
    * r is the local part of (50): eta_p (alpha - alpha_n)/dt + yhat(alpha) -
    * sqrt(3/2) n_tr : tau_dev where chi_p = 1, with n_tr = dev tau_tr /
    * |dev tau_tr|. The flow keeps tau_dev parallel to n_tr, so n_tr : tau_dev
