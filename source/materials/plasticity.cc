@@ -14,6 +14,10 @@ namespace DuctileContact
     // deal.II's tensors accept Sacado's DFad (not SFad) as a scalar type.
     using ADNumber = Sacado::Fad::DFad<double>;
 
+    /// eps / y_0 of the flow direction at points that do not yield (see
+    /// plastic_update()).
+    constexpr double elastic_direction_floor = 0.1;
+
     inline double
     value_of(const double x)
     {
@@ -144,7 +148,12 @@ namespace DuctileContact
         {
           const Number lambda = std::sqrt(1.5) * (alpha - history_n.alpha) / dt;
           const Tensor<2, dim, Number> F_inv        = invert(F);
-          const Number                 inverse_norm = 1. / norm_tr;
+          // Where chi_p = 0 the direction is tau_tr / sqrt(|tau_tr|^2 +
+          // eps^2) (see the header).
+          const double eps =
+            e.yielding ? 0. : elastic_direction_floor * p.initial_yield;
+          const Number inverse_norm =
+            1. / std::sqrt(norm_tr * norm_tr + eps * eps);
           n_tr                                      = inverse_norm * tau_dev_tr;
           const Number factor = (2. / 3.) * dt * lambda * trace(b_tr);
           e.Cp_inv -= factor * symmetrize(F_inv * Tensor<2, dim, Number>(n_tr) *

@@ -215,7 +215,7 @@ namespace DuctileContact
         trial.add(sign * e, delta);
         u_ghosted = trial;
         AssemblyTargets targets{nullptr, nullptr, &residual, nullptr};
-        targets.yield_switch = AssemblyTargets::YieldSwitch::frozen;
+        targets.switches = AssemblyTargets::Switches::frozen;
         assemble(step, constraints, targets);
         if (sign > 0.)
           difference = residual;
@@ -420,9 +420,9 @@ namespace DuctileContact
                   << std::defaultfloat << std::endl;
     };
 
-    // Whether the last accepted state was reached with a frozen yield
-    // switch that its own trial states contradict: its residual is then
-    // not the true one, which the next assembly computes.
+    // Whether the last accepted state was reached with frozen switches
+    // (yield, crack-driver history) that its own state contradicts: its
+    // residual is then not the true one, which the next assembly computes.
     bool switch_changed = false;
     for (unsigned int it = 0;; ++it)
       {
@@ -441,7 +441,7 @@ namespace DuctileContact
                                   &newton_rhs,
                                   &residual,
                                   &internal_force};
-          targets.yield_switch = AssemblyTargets::YieldSwitch::record;
+          targets.switches = AssemblyTargets::Switches::record;
           report.info          = assemble(step, constraints, targets);
         }
         const Norms  n     = block_norms();
@@ -498,14 +498,15 @@ namespace DuctileContact
             u_ghosted = trial;
             {
               TimerOutput::Scope scope(timer, "assembly (line search)");
-              // The yield switch of the iterate: R is smooth along the
-              // line (a plastic point switching within it would make R
-              // jump by its whole flow).
+              // The switches of the iterate: R is smooth along the line
+              // (a plastic point switching within it would make R jump by
+              // its whole flow; a point whose psi^+ passes its history
+              // maximum would add a slope the tangent does not have).
               AssemblyTargets targets{nullptr,
                                       nullptr,
                                       &residual,
                                       &internal_force};
-              targets.yield_switch = AssemblyTargets::YieldSwitch::frozen;
+              targets.switches = AssemblyTargets::Switches::frozen;
               trial_info           = assemble(step, constraints, targets);
               trial_n              = block_norms();
               trial_r              = merit(trial_n, tol);
@@ -547,7 +548,7 @@ namespace DuctileContact
         const bool still_pending = pending && step_length < 1.;
         print(it + 1, trial_n, trial_scale, trial_info, still_pending);
         report.iterations = it + 1;
-        switch_changed    = trial_info.yield_flips > 0;
+        switch_changed    = trial_info.switch_flips > 0;
         if (!still_pending && !switch_changed &&
             converged(trial_n, trial_scale, trial_info))
           {

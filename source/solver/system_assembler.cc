@@ -134,14 +134,14 @@ namespace DuctileContact
 
     AssemblyInfo info;
     info.min_J        = std::numeric_limits<double>::max();
-    using YieldSwitch = AssemblyTargets::YieldSwitch;
-    if (targets.yield_switch == YieldSwitch::record)
-      recorded_yielding.assign(discretisation.triangulation.n_active_cells(),
+    using Switches = AssemblyTargets::Switches;
+    if (targets.switches == Switches::record)
+      recorded_switches.assign(discretisation.triangulation.n_active_cells(),
                                {});
-    Assert(targets.yield_switch != YieldSwitch::frozen ||
-             recorded_yielding.size() ==
+    Assert(targets.switches != Switches::frozen ||
+             recorded_switches.size() ==
                discretisation.triangulation.n_active_cells(),
-           ExcMessage("a frozen yield switch needs a recorded one"));
+           ExcMessage("frozen switches need recorded ones"));
 
     for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -241,8 +241,8 @@ namespace DuctileContact
                 }
               std::optional<bool> frozen;
               const unsigned int  index = cell->active_cell_index();
-              if (has_alpha && targets.yield_switch == YieldSwitch::frozen)
-                frozen = recorded_yielding[index].at(q) != 0;
+              if (has_alpha && targets.switches == Switches::frozen)
+                frozen = (recorded_switches[index].at(q) & 1) != 0;
               const PointResponse m = evaluate_material(body,
                                                         F,
                                                         history_n[q]->plastic,
@@ -251,13 +251,14 @@ namespace DuctileContact
                                                         step.dt,
                                                         with_tangent,
                                                         frozen);
-              if (has_alpha && targets.yield_switch == YieldSwitch::record)
+              if ((has_alpha || has_s) &&
+                  targets.switches == Switches::record)
                 {
-                  recorded_yielding[index].resize(n_q);
-                  recorded_yielding[index][q] = m.yielding;
+                  recorded_switches[index].resize(n_q);
+                  recorded_switches[index][q] = m.yielding ? 1 : 0;
                 }
               if (frozen && m.trial_yielding != *frozen)
-                ++info.yield_flips;
+                ++info.switch_flips;
               const double JxW = fe_values.JxW(q);
               info.stored_energy += m.psi_elastic * JxW;
               volume += JxW;
@@ -382,7 +383,17 @@ namespace DuctileContact
                 {
                   const double eta_f   = body.crack.viscosity;
                   const double psi_max = history_n[q]->psi_plus_max;
-                  const bool   loading = m.psi_plus > psi_max;
+                  bool         loading = m.psi_plus > psi_max;
+                  if (targets.switches == Switches::record)
+                    recorded_switches[index][q] |= loading ? 2 : 0;
+                  else if (targets.switches == Switches::frozen)
+                    {
+                      const bool frozen_loading =
+                        (recorded_switches[index].at(q) & 2) != 0;
+                      if (frozen_loading != loading)
+                        ++info.switch_flips;
+                      loading = frozen_loading;
+                    }
                   const double psi_H   = loading ? m.psi_plus : psi_max;
                   const double g1 = degradation_derivative(s[q], degradation);
                   const double g2 =
@@ -530,7 +541,7 @@ namespace DuctileContact
     info.max_alpha      = Utilities::MPI::max(info.max_alpha, comm);
     info.min_yielding_alpha_increment =
       Utilities::MPI::min(info.min_yielding_alpha_increment, comm);
-    info.yield_flips = Utilities::MPI::sum(info.yield_flips, comm);
+    info.switch_flips = Utilities::MPI::sum(info.switch_flips, comm);
     std::vector<double> sums{info.stored_energy,
                              info.hardening_energy,
                              info.fracture_energy,

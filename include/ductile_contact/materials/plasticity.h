@@ -114,6 +114,16 @@ namespace DuctileContact
    *  - the flow formula is applied at every point with the alpha it is
    *    given, not only where chi_p = 1, and lambda_p is not clamped at
    *    alpha < alpha_n: tau is a smooth function of (F, alpha);
+   *  - where chi_p = 0 the flow direction is tau_tr / sqrt(|tau_tr|^2 +
+   *    eps^2), eps = 0.1 y_0, instead of n_tr: such points flow only as far
+   *    as the gradient term pulls alpha away from alpha_n, and at points
+   *    whose deviatoric trial stress passes near zero (common next to a
+   *    crack, where the material unloads) n_tr turns with a derivative
+   *    ~1/|tau_tr|; Newton's steps then met a curvature of the residual
+   *    that no line search could follow (the ductile notch stalled at the
+   *    force peak with the time step cut to 1e-6). Near the yield surface,
+   *    where chi_p switches, |tau_tr| ~ 0.8 y_0 and the direction differs
+   *    from n_tr by under 1 %;
    *  - where chi_p = 0 the local part is eta_p (alpha - alpha_n)/dt + c
    *    (alpha - alpha_n) with c = mu g_dev tr[bbar_tr] + yhat'(alpha_n),
    *    the slope the yielding branch has there (~3 mu + h): the continuum

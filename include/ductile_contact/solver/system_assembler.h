@@ -49,9 +49,10 @@ namespace DuctileContact
     /// negative value is plastic flow reversed by the gradient term.
     double max_alpha                    = 0.;
     double min_yielding_alpha_increment = std::numeric_limits<double>::max();
-    /// Plastic points whose trial-state switch differs from the frozen one
-    /// (YieldSwitch::frozen only): with none, R is the true residual.
-    unsigned int yield_flips = 0;
+    /// Quadrature points whose yield switch chi_p or crack-driver branch
+    /// (loading: psi^+ above its history maximum) differs from the frozen
+    /// one (Switches::frozen only): with none, R is the true residual.
+    unsigned int switch_flips = 0;
     /// Size of the terms summed into f_int: sqrt of the sum over cells and
     /// DoFs of (sum over quadrature points of (|P : Grad N_i| + (mu + kappa)
     /// |Grad N_i|) JxW)^2 [N]. F = I + Grad u resolves Grad u only to eps,
@@ -92,16 +93,19 @@ namespace DuctileContact
     QuadratureHistory *history = nullptr;
     /// Cell averages for output.
     CellQuantities *cell_quantities = nullptr;
-    /// The yield switch chi_p of the plastic points: from the trial state
-    /// (evaluate), from the trial state and remembered (record: Newton's
-    /// tangent assemblies), or the remembered one (frozen: line search and
-    /// tangent check, so that R is smooth along the Newton direction).
-    enum class YieldSwitch
+    /// The two switches of a quadrature point, the yield switch chi_p of
+    /// (50) and the branch of the crack driver max(psi^+, H_n) (Miehe's
+    /// history field: loading where psi^+ > H_n): from the current state
+    /// (evaluate), from the current state and remembered (record: Newton's
+    /// tangent assemblies), or the remembered ones (frozen: line search and
+    /// tangent check, so that R is smooth along the Newton direction and
+    /// its derivative there is the tangent's).
+    enum class Switches
     {
       evaluate,
       record,
       frozen
-    } yield_switch = YieldSwitch::evaluate;
+    } switches = Switches::evaluate;
   };
 
   /// The load step being solved: time, step and the accepted state before.
@@ -155,9 +159,9 @@ namespace DuctileContact
                    AssemblyInfo                            &info) const;
 
     const Discretisation &discretisation;
-    /// chi_p per (active cell index, quadrature point) of the last
-    /// YieldSwitch::record assembly.
-    mutable std::vector<std::vector<unsigned char>> recorded_yielding;
+    /// The switches per (active cell index, quadrature point) of the last
+    /// Switches::record assembly: bit 0 chi_p, bit 1 crack-driver loading.
+    mutable std::vector<std::vector<unsigned char>> recorded_switches;
     const std::map<dealii::types::material_id, const BodyParameters *> bodies;
     const std::deque<BoundaryCondition> &boundary_conditions;
 
