@@ -120,8 +120,9 @@ namespace DuctileContact
    *    whose deviatoric trial stress passes near zero (common next to a
    *    crack, where the material unloads) n_tr turns with a derivative
    *    ~1/|tau_tr|; Newton's steps then met a curvature of the residual
-   *    that no line search could follow (the ductile notch stalled at the
-   *    force peak with the time step cut to 1e-6). Near the yield surface,
+   *    that no line search could follow (a coarse copy of the ductile
+   *    notch stalled at its force peak with the time step cut to 1e-6;
+   *    benchmarks/plasticity/ductile_notch). Near the yield surface,
    *    where chi_p switches, |tau_tr| ~ 0.8 y_0 and the direction differs
    *    from n_tr by under 1 %;
    *  - where chi_p = 0 the local part is eta_p (alpha - alpha_n)/dt + c
