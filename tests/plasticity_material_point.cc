@@ -153,13 +153,13 @@ main()
   // (at s = 1 a blend of the weight of (17) has a negative slope there).
   {
     p.volumetric_switch_width = 0.05;
-    bool rising = true;
+    bool rising               = true;
     for (const double s : {0., 0.5, 0.9, 1.})
       {
         double previous = -1e300;
         for (int i = -200; i <= 200; ++i)
           {
-            const double J = 1. + 0.1 * i / 200.;
+            const double         J = 1. + 0.1 * i / 200.;
             const Tensor<2, dim> F =
               std::cbrt(J) * Tensor<2, dim>(unit_symmetric_tensor<dim>());
             const PlasticResponse r =

@@ -147,14 +147,14 @@ namespace DuctileContact
       if (value_of(norm_tr) > 0.)
         {
           const Number lambda = std::sqrt(1.5) * (alpha - history_n.alpha) / dt;
-          const Tensor<2, dim, Number> F_inv        = invert(F);
+          const Tensor<2, dim, Number> F_inv = invert(F);
           // Where chi_p = 0 the direction is tau_tr / sqrt(|tau_tr|^2 +
           // eps^2) (see the header).
           const double eps =
             e.yielding ? 0. : elastic_direction_floor * p.initial_yield;
           const Number inverse_norm =
             1. / std::sqrt(norm_tr * norm_tr + eps * eps);
-          n_tr                                      = inverse_norm * tau_dev_tr;
+          n_tr                = inverse_norm * tau_dev_tr;
           const Number factor = (2. / 3.) * dt * lambda * trace(b_tr);
           e.Cp_inv -= factor * symmetrize(F_inv * Tensor<2, dim, Number>(n_tr) *
                                           transpose(F_inv));
@@ -218,7 +218,7 @@ namespace DuctileContact
     const double J     = determinant(F);
     const double g_dev = degradation_of(s, p);
     const double q     = tension_part(J, p.volumetric_switch_width).first;
-    const double tr_b = std::pow(J, -2. / 3.) * trace(push_forward(F, Cp_inv));
+    const double tr_b  = std::pow(J, -2. / 3.) * trace(push_forward(F, Cp_inv));
     return 0.5 * p.bulk_modulus * ((J - 1.) * (J - 1.) - (1. - g_dev) * q) +
            g_dev * 0.5 * p.shear_modulus * (tr_b - 3.);
   }

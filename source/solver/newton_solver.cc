@@ -442,7 +442,7 @@ namespace DuctileContact
                                   &residual,
                                   &internal_force};
           targets.switches = AssemblyTargets::Switches::record;
-          report.info          = assemble(step, constraints, targets);
+          report.info      = assemble(step, constraints, targets);
         }
         const Norms  n     = block_norms();
         const double scale = internal_force.block(0).l2_norm();
@@ -507,10 +507,10 @@ namespace DuctileContact
                                       &residual,
                                       &internal_force};
               targets.switches = AssemblyTargets::Switches::frozen;
-              trial_info           = assemble(step, constraints, targets);
-              trial_n              = block_norms();
-              trial_r              = merit(trial_n, tol);
-              trial_scale          = internal_force.block(0).l2_norm();
+              trial_info       = assemble(step, constraints, targets);
+              trial_n          = block_norms();
+              trial_r          = merit(trial_n, tol);
+              trial_scale      = internal_force.block(0).l2_norm();
             }
             const bool decreases = pending || !parameters.line_search ||
                                    trial_r <= (1. - 1e-4 * step_length) * r;

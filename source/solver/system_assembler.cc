@@ -133,7 +133,7 @@ namespace DuctileContact
     std::vector<const PointHistory *> history_n;
 
     AssemblyInfo info;
-    info.min_J        = std::numeric_limits<double>::max();
+    info.min_J     = std::numeric_limits<double>::max();
     using Switches = AssemblyTargets::Switches;
     if (targets.switches == Switches::record)
       recorded_switches.assign(discretisation.triangulation.n_active_cells(),
@@ -251,8 +251,7 @@ namespace DuctileContact
                                                         step.dt,
                                                         with_tangent,
                                                         frozen);
-              if ((has_alpha || has_s) &&
-                  targets.switches == Switches::record)
+              if ((has_alpha || has_s) && targets.switches == Switches::record)
                 {
                   recorded_switches[index].resize(n_q);
                   recorded_switches[index][q] = m.yielding ? 1 : 0;
@@ -394,7 +393,7 @@ namespace DuctileContact
                         ++info.switch_flips;
                       loading = frozen_loading;
                     }
-                  const double psi_H   = loading ? m.psi_plus : psi_max;
+                  const double psi_H = loading ? m.psi_plus : psi_max;
                   const double g1 = degradation_derivative(s[q], degradation);
                   const double g2 =
                     degradation_second_derivative(s[q], degradation);
