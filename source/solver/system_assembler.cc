@@ -135,6 +135,8 @@ namespace DuctileContact
     AssemblyInfo info;
     info.min_J     = std::numeric_limits<double>::max();
     using Switches = AssemblyTargets::Switches;
+    // Bits of recorded_switches: chi_p, and psi^+ above its history maximum.
+    constexpr unsigned char yielding_bit = 1, loading_bit = 2;
     if (targets.switches == Switches::record)
       recorded_switches.assign(discretisation.triangulation.n_active_cells(),
                                {});
@@ -242,7 +244,7 @@ namespace DuctileContact
               std::optional<bool> frozen;
               const unsigned int  index = cell->active_cell_index();
               if (has_alpha && targets.switches == Switches::frozen)
-                frozen = (recorded_switches[index].at(q) & 1) != 0;
+                frozen = (recorded_switches[index].at(q) & yielding_bit) != 0;
               const PointResponse m = evaluate_material(body,
                                                         F,
                                                         history_n[q]->plastic,
@@ -254,7 +256,7 @@ namespace DuctileContact
               if ((has_alpha || has_s) && targets.switches == Switches::record)
                 {
                   recorded_switches[index].resize(n_q);
-                  recorded_switches[index][q] = m.yielding ? 1 : 0;
+                  recorded_switches[index][q] = m.yielding ? yielding_bit : 0;
                 }
               if (frozen && m.trial_yielding != *frozen)
                 ++info.switch_flips;
@@ -384,11 +386,11 @@ namespace DuctileContact
                   const double psi_max = history_n[q]->psi_plus_max;
                   bool         loading = m.psi_plus > psi_max;
                   if (targets.switches == Switches::record)
-                    recorded_switches[index][q] |= loading ? 2 : 0;
+                    recorded_switches[index][q] |= loading ? loading_bit : 0;
                   else if (targets.switches == Switches::frozen)
                     {
                       const bool frozen_loading =
-                        (recorded_switches[index].at(q) & 2) != 0;
+                        (recorded_switches[index].at(q) & loading_bit) != 0;
                       if (frozen_loading != loading)
                         ++info.switch_flips;
                       loading = frozen_loading;
