@@ -1,8 +1,10 @@
 // Material-point driver of the visco-plastic finite-strain J2 update
 // (model.md section 3; issue #4, item 1), no mesh:
-//  1. the tangents dP/dF, dP/dalpha, dP/ds, dr/dF, dr/dalpha, dr/ds equal
-//     central finite differences (relative 1e-6) in plastic states with
-//     damage s = 0.3 and a prior plastic history;
+//  1. the tangents dP/dF, dP/dalpha, dP/ds, dr/dF, dr/dalpha, dr/ds and
+//     those of the crack driver psi^+ (dF, dalpha, ds) equal central finite
+//     differences (relative 1e-6) in plastic and in elastic states (alpha
+//     != alpha_n in both, as during Newton's iterations) with damage s =
+//     0.3 and a prior plastic history;
 //     the same with the tension/compression switch of the split (17)
 //     blended over |J - 1| < delta = 0.05 (Volumetric switch width), with
 //     samples inside the blend; in both, P is the derivative of the
@@ -61,10 +63,14 @@ main()
       p.volumetric_switch_width = delta;
       std::mt19937                           gen(7);
       std::uniform_real_distribution<double> d(-1., 1.);
-      double       worst = 0, det_error = 0, energy_error = 0;
-      unsigned int plastic = 0, blended = 0;
-      for (unsigned int sample = 0; sample < 40; ++sample)
+      double       worst = 0, worst_driver = 0, det_error = 0, energy_error = 0;
+      unsigned int plastic = 0, elastic = 0, blended = 0;
+      for (unsigned int sample = 0; sample < 60; ++sample)
         {
+          // The last 20 samples stay near the plastic deformation of the
+          // history (F = (I + A) F^p, small A): mostly below yield.
+          const bool     near_yield = sample >= 40;
+          const double   amplitude  = near_yield ? 0.001 : 0.03;
           PlasticHistory h;
           Tensor<2, dim> Fp = unit_symmetric_tensor<dim>();
           for (unsigned int i = 0; i < dim; ++i)
@@ -76,14 +82,14 @@ main()
           Tensor<2, dim> F = unit_symmetric_tensor<dim>();
           for (unsigned int i = 0; i < dim; ++i)
             for (unsigned int j = 0; j < dim; ++j)
-              F[i][j] += 0.03 * d(gen);
+              F[i][j] += amplitude * d(gen);
+          if (near_yield)
+            F = F * Fp;
           const double          alpha = h.alpha + 0.002 * (1.2 + d(gen));
           const double          s = 0.3, dt = 0.1;
           const PlasticResponse r = plastic_update(F, h, alpha, s, dt, p, true);
-          if (!r.yielding)
-            continue;
-          ++plastic;
-          if (std::abs(r.J - 1.) < delta)
+          ++(r.yielding ? plastic : elastic);
+          if (r.yielding && std::abs(r.J - 1.) < delta)
             ++blended;
           det_error =
             std::max(det_error, std::abs(determinant(r.updated.Cp_inv) - 1.));
@@ -127,12 +133,56 @@ main()
               }
           add((ap.r - am.r) / (2 * ea), r.dr_dalpha);
           add((sp.r - sm.r) / (2 * eps), r.dr_ds);
+
+          // The crack driver's derivatives, measured on their own (they are
+          // small next to those of P). psi^+ ~ mu (tr bbar - 3) loses
+          // ~eps_machine mu to cancellation, and at points below yield it
+          // varies on the strain scale eps / mu of the regularised flow
+          // direction (plastic_update()): fourth-order central differences
+          // (h = 1e-5) keep both errors below 1e-7 where second-order ones
+          // reach 1e-6.
+          double     d_diff = 0, d_norm = 0;
+          const auto add_driver = [&](const double fd, const double exact) {
+            d_diff += (fd - exact) * (fd - exact);
+            d_norm += exact * exact;
+          };
+          // d/dx psi^+(x + t direction) at t = 0, from t = +-h, +-2h.
+          const auto derivative = [&](const Tensor<2, dim> &dF,
+                                      const double          dalpha,
+                                      const double          ds) {
+            const auto at = [&](const double t) {
+              return plastic_update(F + t * dF,
+                                    h,
+                                    alpha + t * dalpha,
+                                    s + t * ds,
+                                    dt,
+                                    p,
+                                    false,
+                                    r.yielding)
+                .psi_plus;
+            };
+            const double hd = 1e-5;
+            return (8. * (at(hd) - at(-hd)) - (at(2. * hd) - at(-2. * hd))) /
+                   (12. * hd);
+          };
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int D = 0; D < dim; ++D)
+              {
+                Tensor<2, dim> dF;
+                dF[c][D] = 1.;
+                add_driver(derivative(dF, 0., 0.), r.dpsi_plus_dF[c][D]);
+              }
+          add_driver(derivative(Tensor<2, dim>(), 1., 0.), r.dpsi_plus_dalpha);
+          add_driver(derivative(Tensor<2, dim>(), 0., 1.), r.dpsi_plus_ds);
           worst        = std::max(worst, std::sqrt(diff / norm));
+          worst_driver = std::max(worst_driver, std::sqrt(d_diff / d_norm));
           energy_error = std::max(energy_error, std::sqrt(e_diff / e_norm));
         }
       out << (delta == 0. ? "sharp switch of (17)" : "blended switch of (17)")
           << std::endl;
       out << "plastic samples: " << (plastic >= 10 ? "at least 10" : "too few")
+          << std::endl;
+      out << "elastic samples: " << (elastic >= 10 ? "at least 10" : "too few")
           << std::endl;
       if (delta > 0.)
         out << "samples inside the blend: "
@@ -141,12 +191,15 @@ main()
           << std::endl;
       out << "tangents equal central differences (1e-6): "
           << Testing::yes_no(worst < 1e-6) << std::endl;
+      out << "crack driver psi^+: tangents equal central differences (1e-6): "
+          << Testing::yes_no(worst_driver < 1e-6) << std::endl;
       out << "det (C^p)^-1 = 1 to round-off (1e-14): "
           << Testing::yes_no(det_error < 1e-14) << std::endl;
       std::cout << "delta " << delta << ": " << plastic << " plastic, "
-                << blended << " blended samples; worst tangent error " << worst
-                << ", energy error " << energy_error << ", det error "
-                << det_error << std::endl;
+                << elastic << " elastic, " << blended
+                << " blended samples; worst tangent error " << worst
+                << ", of psi^+ " << worst_driver << ", energy error "
+                << energy_error << ", det error " << det_error << std::endl;
     }
   // The blended volumetric energy stays convex in J at every damage: the
   // pressure dPsi/dJ of a pure dilation rises strictly across the blend

@@ -43,6 +43,7 @@ namespace DuctileContact
         r.trial_yielding        = p.trial_yielding;
         r.dpsi_plus_dF          = p.dpsi_plus_dF;
         r.dpsi_plus_dalpha      = p.dpsi_plus_dalpha;
+        r.dpsi_plus_ds          = p.dpsi_plus_ds;
         r.updated               = p.updated;
       }
     else if (body.fracture)

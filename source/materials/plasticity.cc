@@ -287,6 +287,7 @@ namespace DuctileContact
           response.dpsi_plus_dF[a][B] = e.psi_plus.dx(dim * a + B);
         }
     response.dpsi_plus_dalpha = e.psi_plus.dx(9);
+    response.dpsi_plus_ds     = e.psi_plus.dx(10);
     response.dr_dalpha        = e.r.dx(9);
     response.dr_ds            = e.r.dx(10);
     return response;

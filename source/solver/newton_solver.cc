@@ -227,6 +227,17 @@ namespace DuctileContact
     const double       error = difference.l2_norm() / k_delta.l2_norm();
     std::ostringstream text;
     text << std::scientific << std::setprecision(2) << error;
+    // By block as well: the rows of alpha and s are small in absolute terms
+    // next to those of u, so their errors hide in the global ratio.
+    const char *names[Block::n_blocks] = {"u", "alpha", "s"};
+    text << " (by block:";
+    for (unsigned int b = 0; b < Block::n_blocks; ++b)
+      if (k_delta.block(b).size() > 0)
+        text << " " << names[b] << " "
+             << difference.block(b).l2_norm() /
+                  std::max(k_delta.block(b).l2_norm(),
+                           std::numeric_limits<double>::min());
+    text << ")";
     verbose_out << "        tangent check: |K d - dR/de| / |K d| = "
                 << text.str() << std::endl;
     return error;

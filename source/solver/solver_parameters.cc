@@ -113,7 +113,11 @@ namespace DuctileContact
       "Verbosity = 2); the value of the last update of each step, the one "
       "nearest the solution, goes to the statistics column tangent_error. "
       "Expect round-off (1e-6 or less) except where the residual has a kink "
-      "within the difference step (a node just touching, flush edges).");
+      "within the difference step (a node just touching, flush edges). The "
+      "screen shows the ratio per block (u, alpha, s) as well: the alpha and "
+      "s rows are small next to those of u, so their errors hide in the "
+      "global ratio; in their blocks the difference quotient's round-off "
+      "can reach 1e-4.");
     prm.leave_subsection();
   }
 

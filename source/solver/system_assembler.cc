@@ -418,10 +418,15 @@ namespace DuctileContact
                         std::abs(s_value[k]) * JxW;
                       if (!with_tangent)
                         continue;
+                      // d(g' psi_H)/ds = g'' psi_H + g' dpsi^+/ds when
+                      // loading (psi^+ depends on s at points that do not
+                      // yield, see PlasticResponse::dpsi_plus_ds).
+                      const double ds_coefficient =
+                        eta_f / step.dt + g2 * psi_H +
+                        (loading ? g1 * m.dpsi_plus_ds : 0.);
                       for (unsigned int l = 0; l < n_s; ++l)
                         cell_matrix(i, s_dofs[l]) +=
-                          (eta_f / step.dt + g2 * psi_H) * s_value[k] *
-                          s_value[l] * JxW;
+                          ds_coefficient * s_value[k] * s_value[l] * JxW;
                       if (loading)
                         {
                           for (unsigned int l = 0; l < n_u; ++l)

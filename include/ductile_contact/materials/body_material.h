@@ -32,7 +32,7 @@ namespace DuctileContact
     bool                   yielding = false, trial_yielding = false;
 
     dealii::Tensor<2, dim> dpsi_plus_dF;
-    double                 dpsi_plus_dalpha = 0.;
+    double                 dpsi_plus_dalpha = 0., dpsi_plus_ds = 0.;
 
     /// (C^p)^{-1} and alpha after this step (plastic bodies only).
     PlasticHistory updated;

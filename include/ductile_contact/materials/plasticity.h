@@ -81,7 +81,10 @@ namespace DuctileContact
     dealii::Tensor<2, dim> dr_dF;
     double                 dr_dalpha = 0., dr_ds = 0.;
     dealii::Tensor<2, dim> dpsi_plus_dF;
-    double                 dpsi_plus_dalpha = 0.;
+    /// psi^+ depends on s where chi_p = 0 and alpha != alpha_n: the flow
+    /// direction there, tau_tr / sqrt(|tau_tr|^2 + eps^2), scales with
+    /// g(s) (see plastic_update()).
+    double dpsi_plus_dalpha = 0., dpsi_plus_ds = 0.;
   };
 
   /**
