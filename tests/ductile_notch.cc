@@ -48,9 +48,8 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out = Testing::open_output();
 
-  std::ifstream     scene(SOURCE_DIR "/../prm/ductile_notch.prm");
   std::stringstream prm;
-  prm << scene.rdbuf();
+  prm << Testing::shipped_scene("ductile_notch.prm");
   prm << R"(
 subsection Mesh
   subsection Gmsh
@@ -81,8 +80,8 @@ end
   const Testing::Table t = Testing::run_scene(prm.str(), "ductile_notch_run");
 
   const double        thickness = 1e-4, ligament = 5e-4, g_c = 2800;
-  const auto         &F         = t.at("F2_y");
-  const std::size_t   n         = F.size();
+  const auto         &F     = t.at("F2_y");
+  const std::size_t   n     = F.size();
   const std::size_t   k_max = std::max_element(F.begin(), F.end()) - F.begin();
   const double        peak  = F[k_max];
   const double        W_ext = t.at("external_work")[n - 1];
@@ -90,11 +89,10 @@ end
   std::vector<double> rates, crack_rates;
   for (std::size_t k = 1; k < n; ++k)
     {
-      worst_balance =
-        std::max(worst_balance,
-                 std::abs(t.at("energy_residual")[k]) /
-                   std::max(t.at("external_work")[k], 1e-300));
-      min_s_change = std::min(min_s_change, t.at("min_s_change")[k]);
+      worst_balance     = std::max(worst_balance,
+                               std::abs(t.at("energy_residual")[k]) /
+                                 std::max(t.at("external_work")[k], 1e-300));
+      min_s_change      = std::min(min_s_change, t.at("min_s_change")[k]);
       const double rate = t.at("newton_rate")[k];
       if (std::isfinite(rate))
         {
@@ -132,14 +130,13 @@ end
       << "and over the crack's steps (>= 4 iterations), median > 1.7: "
       << Testing::yes_no(crack_rates.size() >= 3 && median(crack_rates) > 1.7)
       << "\n";
-  std::cout << "peak " << peak / thickness * 1e-6 << " kN/mm at u = "
-            << t.at("u2_y")[k_max] * 1e6 << " um, alpha "
+  std::cout << "peak " << peak / thickness * 1e-6
+            << " kN/mm at u = " << t.at("u2_y")[k_max] * 1e6 << " um, alpha "
             << t.at("max_alpha")[k_max] << ", W_p/W_ext " << plastic_share
             << "; end force / peak " << F[n - 1] / peak << ", crack energy "
             << crack_ratio << " g_c A, worst balance " << worst_balance
-            << " W_ext (W_ext " << W_ext << " J), min s change "
-            << min_s_change << ", median rate " << median(rates) << " of "
-            << rates.size() << ", in the crack's steps "
-            << median(crack_rates) << " of " << crack_rates.size()
-            << std::endl;
+            << " W_ext (W_ext " << W_ext << " J), min s change " << min_s_change
+            << ", median rate " << median(rates) << " of " << rates.size()
+            << ", in the crack's steps " << median(crack_rates) << " of "
+            << crack_rates.size() << std::endl;
 }

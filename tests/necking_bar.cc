@@ -29,9 +29,8 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out = Testing::open_output();
 
-  std::ifstream     scene(SOURCE_DIR "/../prm/necking_bar.prm");
   std::stringstream prm;
-  prm << scene.rdbuf();
+  prm << Testing::shipped_scene("necking_bar.prm");
   // Coarse mesh, fewer steps; probes on the hull (in the plane z = 0) at
   // mid-length and half-way to the end.
   const double R = 6.413e-3, L = 53.334e-3, e = 0.018;

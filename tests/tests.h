@@ -52,6 +52,16 @@ namespace Testing
     return table;
   }
 
+  /// Text of the shipped scene prm/@p name (tests append overrides).
+  inline std::string
+  shipped_scene(const std::string &name)
+  {
+    std::ifstream     in(SOURCE_DIR "/../prm/" + name);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
   /**
    * Runs the scene in @p prm (text of a .prm file) with its results in
    * folder @p directory and returns the statistics table. Throws if the run
