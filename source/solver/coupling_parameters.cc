@@ -34,6 +34,19 @@ namespace DuctileContact
       "alternation (m = this depth; 0 = plain alternate minimisation). The "
       "converged state is the same; it only takes fewer alternations.",
       Patterns::Integer(0, 50));
+    prm.add_parameter(
+      "Irreversibility",
+      irreversibility,
+      "How the crack is kept from healing (model.md section 2). history: the "
+      "crack driver uses the largest psi^+ a point has had (Miehe's history "
+      "field, with the crack viscosity); this keeps the driving force from "
+      "falling but not s itself: near s = 1, where the driver -g'(s) psi^+ "
+      "vanishes, s can relax by ~1e-4 as a crack runs. bound: the history "
+      "field and, in addition, s >= its value of the last accepted step at "
+      "every phase-field DoF, by a primal-dual active set inside Newton's "
+      "method (the rows of the DoFs on the bound carry the bound; their "
+      "residual is the bound's reaction and must be >= 0).",
+      Patterns::Selection("history|bound"));
     prm.leave_subsection();
   }
 

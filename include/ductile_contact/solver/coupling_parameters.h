@@ -20,6 +20,10 @@ namespace DuctileContact
    *    (AndersonAcceleration);
    *  - monolithic-staggered: monolithic, and a step where Newton fails is
    *    redone staggered before it is cut back.
+   *
+   * Irreversibility of s: the crack driver always uses the history maximum
+   * of psi^+ (model.md section 2); with `bound` (default) s_i >= s_n,i holds
+   * at every phase-field DoF as well (PhaseFieldBound).
    */
   struct CouplingParameters
   {
@@ -27,6 +31,8 @@ namespace DuctileContact
     unsigned int max_staggered_iterations = 200;
     /// Anderson depth m for the staggered phase field (0: plain).
     unsigned int acceleration_depth = 0;
+    /// "history" or "bound".
+    std::string irreversibility = "bound";
 
     void
     declare(dealii::ParameterHandler &prm);

@@ -8,6 +8,7 @@
 
 #include <ductile_contact/solver/coupling_parameters.h>
 #include <ductile_contact/solver/linear_solver.h>
+#include <ductile_contact/solver/phase_field_bound.h>
 #include <ductile_contact/solver/solver_parameters.h>
 #include <ductile_contact/solver/system_assembler.h>
 
@@ -30,7 +31,8 @@ namespace DuctileContact
     unsigned int staggered_iterations = 1;
     /// Contact multiplier updates (Newton solves - 1) of the step.
     unsigned int augmentations = 0;
-    /// ||R|| of the iterations whose Dirichlet data were reached.
+    /// Merit of the iterations whose Dirichlet data were reached (since the
+    /// irreversibility bound was engaged, if it was).
     std::vector<double> residual_norms;
     /// Observed order log(r_k+1/r_k)/log(r_k/r_k-1) of the last three
     /// residuals (2 = quadratic); NaN if fewer than three are meaningful.
@@ -56,6 +58,12 @@ namespace DuctileContact
    * ||f_int,u|| + atol * force_scale (f_int holds the reactions, so the test
    * is relative to the load carried) and ||R_b|| <= rtol S_b for alpha and
    * s (S_b: the local terms at alpha = 1 or s = 1).
+   *
+   * With Coupling/Irreversibility = bound, the phase-field DoFs are kept at
+   * or above their values of the last accepted step by an active set
+   * (PhaseFieldBound): its rows carry the bound, and R_s is replaced by
+   * the complementarity residual min(R_s,i, K_ii (s_i - s_n,i)) in the
+   * norms, the merit and the test above.
    *
    * solve_step() applies the coupling strategy: monolithic, staggered, or
    * monolithic with a staggered retry of a failed step (CouplingParameters).
@@ -116,11 +124,14 @@ namespace DuctileContact
 
     /// Newton/Check tangent: |K delta - (R(u + e delta) - R(u - e delta)) /
     /// 2e| / |K delta| on the free DoFs, e delta of 1e-6 the size of u; the
-    /// tangent and delta of the current iteration, @p residual overwritten.
+    /// tangent and delta of the current iteration, @p residual overwritten;
+    /// the rows of the irreversibility bound's active set (if @p bound)
+    /// are left out.
     double
     tangent_error(const StepData                                   &step,
                   const dealii::TrilinosWrappers::MPI::BlockVector &u,
-                  const dealii::AffineConstraints<double> &constraints);
+                  const dealii::AffineConstraints<double>          &constraints,
+                  const PhaseFieldBound                            *bound);
 
     const NewtonParameters              &parameters;
     const CouplingParameters            &coupling;

@@ -1,0 +1,92 @@
+#pragma once
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <ductile_contact/discretisation/discretisation.h>
+
+namespace DuctileContact
+{
+  /**
+   * Irreversibility of the crack as a bound on the phase-field DoFs,
+   * s_i >= s_n,i (model.md section 2: "any method must keep s from
+   * decreasing"), by a primal-dual active set, i.e. semismooth Newton
+   * (Hintermueller, Ito, Kunisch 2002; for phase-field fracture as in
+   * Heister, Wheeler, Wick 2015). The KKT conditions of the bound,
+   *
+   *   R_s,i = lambda_i >= 0,  s_i - s_n,i >= 0,  lambda_i (s_i - s_n,i) = 0,
+   *
+   * hold exactly where the complementarity residual
+   *
+   *   C_i = min(R_s,i, K_ii (s_i - s_n,i))
+   *
+   * vanishes (K_ii > 0 the diagonal of the s-s tangent, a scale that makes
+   * both arguments residuals). Newton on C = 0 is the active set method:
+   * on A = { i : R_s,i + K_ii (s_n,i - s_i) > 0 }, the DoFs where a Newton
+   * step on row i alone would end below s_n,i, the row becomes K_ii
+   * delta_i = K_ii (s_n,i - s_i) (the bound reached after a full step);
+   * elsewhere it is the Newton row of R. The norms and the convergence
+   * test use C in place of R_s, so DoFs that sit on the bound with a zero
+   * multiplier (e.g. s = 0 far from a crack, where round-off decides the
+   * sign of R) count as converged on either side of A. NewtonSolver
+   * engages the active set only once plain Newton has converged to a state
+   * whose C does not meet the tolerance.
+   *
+   * The history field of psi^+ (model.md's default) stays: it keeps the
+   * driving force from falling; the bound keeps s itself from falling,
+   * which the history alone does not (near s = 1 the driver -g'(s) psi^+
+   * vanishes and s relaxes, and the C0IP solution overshoots s = 1).
+   *
+   * Indices are block-local to the phase-field block; owned DoFs only;
+   * DoFs constrained in the Newton constraints (hanging nodes, Dirichlet
+   * data) are left alone.
+   */
+  class PhaseFieldBound
+  {
+  public:
+    explicit PhaseFieldBound(const Discretisation &discretisation);
+
+    /// Stores K_ii of the s-s block of a freshly assembled tangent.
+    void
+    record_diagonal(const dealii::TrilinosWrappers::BlockSparseMatrix &K);
+
+    /// A at the state @p u with residual @p residual (R, before
+    /// to_complementarity()); returns |A| summed over ranks.
+    dealii::types::global_dof_index
+    update_active_set(const dealii::TrilinosWrappers::MPI::BlockVector &u,
+                      const dealii::TrilinosWrappers::MPI::BlockVector &old,
+                      const dealii::TrilinosWrappers::MPI::BlockVector &residual,
+                      const dealii::AffineConstraints<double> &constraints);
+
+    /// Replaces the rows of A in @p K and @p newton_rhs by the bound.
+    void
+    constrain(dealii::TrilinosWrappers::BlockSparseMatrix      &K,
+              dealii::TrilinosWrappers::MPI::BlockVector       &newton_rhs,
+              const dealii::TrilinosWrappers::MPI::BlockVector &u,
+              const dealii::TrilinosWrappers::MPI::BlockVector &old) const;
+
+    /// Replaces R_s by C in @p residual (the state @p u).
+    void
+    to_complementarity(
+      dealii::TrilinosWrappers::MPI::BlockVector       &residual,
+      const dealii::TrilinosWrappers::MPI::BlockVector &u,
+      const dealii::TrilinosWrappers::MPI::BlockVector &old,
+      const dealii::AffineConstraints<double>          &constraints) const;
+
+    /// Zeroes the rows of A in @p v (the tangent check compares R, whose
+    /// rows of A the Newton system does not hold).
+    void
+    remove_active_rows(dealii::TrilinosWrappers::MPI::BlockVector &v) const;
+
+  private:
+    const Discretisation &discretisation;
+    /// First DoF of the phase-field block in the global numbering.
+    const dealii::types::global_dof_index offset;
+    /// K_ii of the s-s block on the owned s DoFs.
+    dealii::TrilinosWrappers::MPI::Vector diagonal;
+    dealii::IndexSet                      active;
+  };
+} // namespace DuctileContact
