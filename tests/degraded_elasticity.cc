@@ -1,8 +1,9 @@
 // Unit test of the degraded neo-Hooke law of an elastic body that can crack,
 // model.md (16)-(19) and (27), and of the degradation g_k(s), no mesh:
 //  1. g_k, g_k', g_k'' against central differences, their values at s = 0
-//     and s = 1, the closed form (1 - k)(1 - s)^2 + k for a_g = 2, and g_k'
-//     against the Sacado derivative of degradation_value();
+//     and s = 1 and beyond (g_k = k, no slope, for s > 1), the closed form
+//     (1 - k)(1 - s)^2 + k for a_g = 2, and g_k' against the Sacado
+//     derivative of degradation_value();
 //  2. neo_hooke() splits exactly: its part (mu, kappa) = (0, kappa) is
 //     kappa/2 (J - 1)^2 with tau = kappa (J^2 - J) I, and the parts
 //     (0, kappa) + (mu, 0) give the full law (psi, tau, P, A);
@@ -109,9 +110,20 @@ main()
                       std::abs(degradation_value(1., p) - k),
                       std::abs(degradation_derivative(0., p) + a * (1. - k)),
                       std::abs(degradation_derivative(1., p))});
+          // Beyond s = 1: g_k = k, no slope (the continuation of the
+          // degradation.h).
+          for (const double s : {1. + 1e-9, 1.01, 1.05, 1.3})
+            end_error = std::max(
+              {end_error,
+               std::abs(degradation_value(s, p) - k),
+               std::abs(degradation_derivative(s, p)),
+               std::abs(degradation_second_derivative(s, p)),
+               std::abs(degradation_value(Sacado::Fad::DFad<double>(1, 0, s), p)
+                          .dx(0))});
+          // Samples inside [0, 1], and at 1 from the left (g'' jumps there).
           for (unsigned int i = 0; i <= 10; ++i)
             {
-              const double s = 0.1 * i, h = 1e-5;
+              const double s = i < 10 ? 0.1 * i : 1. - 1e-4, h = 1e-5;
               const double dg_fd =
                 (degradation_value(s + h, p) - degradation_value(s - h, p)) /
                 (2 * h);
@@ -138,8 +150,8 @@ main()
                                      2. * (1. - k))});
             }
         }
-    out << "g_k(0) = 1, g_k(1) = k, g_k'(0) = -a (1 - k), g_k'(1) = 0 "
-           "(1e-14): "
+    out << "g_k(0) = 1, g_k(1) = k, g_k'(0) = -a (1 - k), g_k'(1) = 0, "
+           "g_k = k without slope for s > 1 (1e-14): "
         << Testing::yes_no(end_error < 1e-14) << std::endl;
     out << "g_k' and g_k'' vs FD: max error < 1e-8: "
         << Testing::yes_no(fd_error < 1e-8) << std::endl;

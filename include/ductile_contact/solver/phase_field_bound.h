@@ -56,10 +56,11 @@ namespace DuctileContact
     /// A at the state @p u with residual @p residual (R, before
     /// to_complementarity()); returns |A| summed over ranks.
     dealii::types::global_dof_index
-    update_active_set(const dealii::TrilinosWrappers::MPI::BlockVector &u,
-                      const dealii::TrilinosWrappers::MPI::BlockVector &old,
-                      const dealii::TrilinosWrappers::MPI::BlockVector &residual,
-                      const dealii::AffineConstraints<double> &constraints);
+    update_active_set(
+      const dealii::TrilinosWrappers::MPI::BlockVector &u,
+      const dealii::TrilinosWrappers::MPI::BlockVector &old,
+      const dealii::TrilinosWrappers::MPI::BlockVector &residual,
+      const dealii::AffineConstraints<double>          &constraints);
 
     /// Replaces the rows of A in @p K and @p newton_rhs by the bound.
     void
