@@ -10,9 +10,9 @@ namespace DuctileContact
   using namespace dealii;
 
   PhaseFieldBound::PhaseFieldBound(const Discretisation &discretisation)
-    : discretisation(discretisation)
-    , offset(discretisation.dofs_per_block[Block::displacement] +
-             discretisation.dofs_per_block[Block::hardening])
+      : discretisation(discretisation)
+      , offset(discretisation.dofs_per_block[Block::displacement] +
+               discretisation.dofs_per_block[Block::hardening])
   {
   }
 
@@ -57,10 +57,11 @@ namespace DuctileContact
 
 
   void
-  PhaseFieldBound::constrain(TrilinosWrappers::BlockSparseMatrix      &K,
-                             TrilinosWrappers::MPI::BlockVector       &rhs,
-                             const TrilinosWrappers::MPI::BlockVector &u,
-                             const TrilinosWrappers::MPI::BlockVector &old) const
+  PhaseFieldBound::constrain(
+    TrilinosWrappers::BlockSparseMatrix      &K,
+    TrilinosWrappers::MPI::BlockVector       &rhs,
+    const TrilinosWrappers::MPI::BlockVector &u,
+    const TrilinosWrappers::MPI::BlockVector &old) const
   {
     const auto &s   = u.block(Block::phase_field);
     const auto &s_n = old.block(Block::phase_field);
