@@ -22,10 +22,9 @@
 //    dissipation of s (statistics energy_residual, model.md section 6)
 //    closes to 5 % of W_ext at every step (at the end W_p is 62 % of W_ext,
 //    the crack energy 32 %, the viscous dissipation of s 4 %);
-//  - s never decreases at any DoF (Coupling/Irreversibility = bound, the
-//    default; with the history field alone nodes of the broken band with
-//    s ~ 1.01, where the driver -g'(s) H vanishes, relax: by 1.7e-4 up to
-//    this run's end, by 1.8e-3 if pulled on to 22.8 um);
+//  - s never decreases at any DoF (Coupling/Irreversibility = history and
+//    bound, the default; before g was continued by 0 beyond s = 1, the
+//    history field alone let the broken band relax by 1.7e-4 here);
 //  - Newton converges quadratically: the observed order has a median above
 //    1.7 over the steps where it is defined, also over the steps of the
 //    crack's run (four or more iterations).

@@ -8,7 +8,7 @@
 //    force has dropped to 20 % of F_max, the crack energy g_c int gamma
 //    equals g_c x ligament (0.5 mm) x thickness within 10 % (a straight
 //    crack: a crack that left the ligament would be longer);
-//    s never decreases at any DoF (Coupling/Irreversibility = bound);
+//    s never decreases at any DoF (the default Coupling/Irreversibility);
 //  - the staggered strategy gives the same curve up to the peak.
 // Peak-force convergence in h and du: benchmarks/phase_field/sent.
 // Run on 1 and 2 MPI ranks with identical output.

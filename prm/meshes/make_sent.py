@@ -65,9 +65,13 @@ def uniform(a, b, h_fine):
     return [a + (b - a) * i / n for i in range(n + 1)]
 
 
-# x: graded up to 0.5 - band, uniform (fine) to x_end, graded to 1
+# x: graded up to 0.5 - band, uniform (fine) to x_end, graded to 1; the
+# slit's tip x = 0.5 is a grid line whatever h (spacings near h on either
+# side of it), so the notch has the same length on every mesh
 x0 = 0.5 - band
-xs = graded(0.0, x0, h, False)[:-1] + uniform(x0, x_end, h)
+xs = graded(0.0, x0, h, False)[:-1] + uniform(x0, 0.5, h)
+if x_end > 0.5 + 1e-12:
+    xs += uniform(0.5, x_end, h)[1:]
 if x_end < 1.0 - 1e-12:
     xs += graded(x_end, 1.0, h, True)[1:]
 # y: uniform in the band around y_mid (a grid line), graded outside

@@ -86,7 +86,9 @@ namespace DuctileContact
     assembler =
       std::make_unique<SystemAssembler>(*discretisation,
                                         bodies,
-                                        parameters.boundary_conditions);
+                                        parameters.boundary_conditions,
+                                        parameters.coupling.irreversibility !=
+                                          "bound");
     linear_solver =
       std::make_unique<LinearSolver>(parameters.linear_solver, *discretisation);
     {

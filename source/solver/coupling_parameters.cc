@@ -39,14 +39,15 @@ namespace DuctileContact
       irreversibility,
       "How the crack is kept from healing (model.md section 2). history: the "
       "crack driver uses the largest psi^+ a point has had (Miehe's history "
-      "field, with the crack viscosity); this keeps the driving force from "
-      "falling but not s itself: near s = 1, where the driver -g'(s) psi^+ "
-      "vanishes, s can relax by ~1e-4 as a crack runs. bound: the history "
-      "field and, in addition, s >= its value of the last accepted step at "
-      "every phase-field DoF, by a primal-dual active set inside Newton's "
-      "method (the rows of the DoFs on the bound carry the bound; their "
-      "residual is the bound's reaction and must be >= 0).",
-      Patterns::Selection("history|bound"));
+      "field); this keeps the driving force from falling but does not by "
+      "itself keep s from falling (the gradient and bi-Laplacian terms of "
+      "the neighbours act on it too). bound: s >= its value of the last "
+      "accepted step at every phase-field DoF, by a primal-dual active set "
+      "inside Newton's method (engaged when a converged state violates it; "
+      "the rows of the DoFs on the bound carry the bound, their residual is "
+      "the bound's reaction and must be >= 0), with the driver from the "
+      "current psi^+. history and bound: both.",
+      Patterns::Selection("history|bound|history and bound"));
     prm.leave_subsection();
   }
 

@@ -53,10 +53,12 @@ namespace DuctileContact
   SystemAssembler::SystemAssembler(
     const Discretisation                                       &discretisation,
     const std::map<types::material_id, const BodyParameters *> &bodies,
-    const std::deque<BoundaryCondition> &boundary_conditions)
+    const std::deque<BoundaryCondition> &boundary_conditions,
+    const bool                           crack_history)
       : discretisation(discretisation)
       , bodies(bodies)
       , boundary_conditions(boundary_conditions)
+      , crack_history(crack_history)
       , elastic_values(discretisation.mapping,
                        discretisation.fe_collection,
                        discretisation.quadrature,
@@ -382,9 +384,10 @@ namespace DuctileContact
               // Phase-field rows, (51) without a(s, ds) (added below).
               if (has_s)
                 {
-                  const double eta_f   = body.crack.viscosity;
-                  const double psi_max = history_n[q]->psi_plus_max;
-                  bool         loading = m.psi_plus > psi_max;
+                  const double eta_f = body.crack.viscosity;
+                  const double psi_max =
+                    crack_history ? history_n[q]->psi_plus_max : 0.;
+                  bool loading = m.psi_plus > psi_max;
                   if (targets.switches == Switches::record)
                     recorded_switches[index][q] |= loading ? loading_bit : 0;
                   else if (targets.switches == Switches::frozen)
@@ -407,6 +410,12 @@ namespace DuctileContact
                     history_new[q].psi_plus_max = psi_H;
                   const double scale = body.crack.critical_energy_release_rate /
                                        (2. * body.crack.length_scale);
+                  // d(g' psi_H)/ds = g'' psi_H + g' dpsi^+/ds when loading
+                  // (psi^+ depends on s at points that do not yield, see
+                  // PlasticResponse::dpsi_plus_ds).
+                  const double ds_coefficient =
+                    eta_f / step.dt + g2 * psi_H +
+                    (loading ? g1 * m.dpsi_plus_ds : 0.);
                   for (unsigned int k = 0; k < n_s; ++k)
                     {
                       const unsigned int i = s_dofs[k];
@@ -418,12 +427,6 @@ namespace DuctileContact
                         std::abs(s_value[k]) * JxW;
                       if (!with_tangent)
                         continue;
-                      // d(g' psi_H)/ds = g'' psi_H + g' dpsi^+/ds when
-                      // loading (psi^+ depends on s at points that do not
-                      // yield, see PlasticResponse::dpsi_plus_ds).
-                      const double ds_coefficient =
-                        eta_f / step.dt + g2 * psi_H +
-                        (loading ? g1 * m.dpsi_plus_ds : 0.);
                       for (unsigned int l = 0; l < n_s; ++l)
                         cell_matrix(i, s_dofs[l]) +=
                           ds_coefficient * s_value[k] * s_value[l] * JxW;

@@ -1,22 +1,23 @@
 #!/usr/bin/env bash
-# Irreversibility of the crack (issue #3): the history field of psi+ alone
-# against the history field plus the bound s >= s_n at every phase-field
-# DoF (Coupling/Irreversibility = history | bound), on the coarse copy of
+# Irreversibility of the crack (issue #3): the history field of psi+ alone,
+# the bound s >= s_n at every phase-field DoF alone, and both
+# (Coupling/Irreversibility = history | bound | history and bound, the
+# default), on the coarse copy of
 # the ductile notched plate (the ctest ductile_notch's scene: h = l_f =
 # 0.1 mm, l_p = 0.2 mm, g_c = 2800 J/m^2), pulled to 22.8 um, past the
 # separation, where the history field alone lets the broken band relax.
 # report.py: smallest s change, Newton iterations, cut-backs, run time and
 # the differences of the force curves.
 # Usage: benchmarks/phase_field/irreversibility/run.sh [NP] (default 1 rank,
-# about 2 x 3 min). Finished runs are skipped.
+# about 3 x 4 min). Finished runs are skipped.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 np=${1:-1}
 require_build
 
-for mode in history bound; do
-  dir="$here/runs/$mode"
+for mode in history bound "history and bound"; do
+  dir="$here/runs/${mode// /-}"
   if run_finished "$dir"; then
     echo "== $mode (done)"
     continue

@@ -21,9 +21,10 @@ namespace DuctileContact
    *  - monolithic-staggered: monolithic, and a step where Newton fails is
    *    redone staggered before it is cut back.
    *
-   * Irreversibility of s: the crack driver always uses the history maximum
-   * of psi^+ (model.md section 2); with `bound` (default) s_i >= s_n,i holds
-   * at every phase-field DoF as well (PhaseFieldBound).
+   * Irreversibility of s (model.md section 2): `history` (the crack driver
+   * uses the history maximum of psi^+), `bound` (s_i >= s_n,i at every
+   * phase-field DoF, PhaseFieldBound, with the driver from the current
+   * psi^+) or `history and bound` (default: both).
    */
   struct CouplingParameters
   {
@@ -31,8 +32,8 @@ namespace DuctileContact
     unsigned int max_staggered_iterations = 200;
     /// Anderson depth m for the staggered phase field (0: plain).
     unsigned int acceleration_depth = 0;
-    /// "history" or "bound".
-    std::string irreversibility = "bound";
+    /// "history", "bound" or "history and bound".
+    std::string irreversibility = "history and bound";
 
     void
     declare(dealii::ParameterHandler &prm);

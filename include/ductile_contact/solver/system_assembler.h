@@ -130,10 +130,10 @@ namespace DuctileContact
    *
    * with P and r from evaluate_material(), psi^+_H = max(psi^+_hist,
    * psi^+(F, alpha)) the crack driver with history (irreversibility,
-   * chi_f = 1), and a(., .) the C0IP form of g_c gamma (phase_field/c0ip.h)
-   * with cell and interior-face terms. Dead-load nominal tractions T.
-   * A pure assembly: it does not own vectors, know the load history or
-   * decide anything.
+   * chi_f = 1; psi^+ alone without @p crack_history), and a(., .) the C0IP form
+   * of g_c gamma (phase_field/c0ip.h) with cell and interior-face terms.
+   * Dead-load nominal tractions T. A pure assembly: it does not own vectors,
+   * know the load history or decide anything.
    */
   class SystemAssembler
   {
@@ -141,7 +141,8 @@ namespace DuctileContact
     SystemAssembler(const Discretisation                   &discretisation,
                     const std::map<dealii::types::material_id,
                                    const BodyParameters *> &bodies,
-                    const std::deque<BoundaryCondition> &boundary_conditions);
+                    const std::deque<BoundaryCondition>    &boundary_conditions,
+                    const bool crack_history = true);
 
     /// @p u must have ghost entries. Matrices/vectors in @p targets are
     /// zeroed and compressed here.
@@ -164,6 +165,9 @@ namespace DuctileContact
     mutable std::vector<std::vector<unsigned char>> recorded_switches;
     const std::map<dealii::types::material_id, const BodyParameters *> bodies;
     const std::deque<BoundaryCondition> &boundary_conditions;
+    /// Whether the crack driver keeps the history maximum of psi^+
+    /// (Coupling/Irreversibility other than `bound`).
+    const bool crack_history;
 
     // Evaluation objects, built once: their shape data (in particular the
     // hessians on all subfaces of FEInterfaceValues) are expensive to set
