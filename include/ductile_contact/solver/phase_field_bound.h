@@ -35,10 +35,14 @@ namespace DuctileContact
    * engages the active set only once plain Newton has converged to a state
    * whose C does not meet the tolerance.
    *
-   * The history field of psi^+ (model.md's default) stays: it keeps the
+   * With Coupling/Irreversibility = history and bound (the default) the
+   * history field of psi^+ (model.md's default) acts as well: it keeps the
    * driving force from falling; the bound keeps s itself from falling,
-   * which the history alone does not (near s = 1 the driver -g'(s) psi^+
-   * vanishes and s relaxes, and the C0IP solution overshoots s = 1).
+   * which the history alone does not guarantee (the gradient and
+   * bi-Laplacian terms of the neighbours act on s too; before g was
+   * continued by 0 beyond s = 1, the negative driver of the overshoot
+   * above 1 pulled the broken band down). With `bound` alone the driver
+   * comes from the current psi^+.
    *
    * Indices are block-local to the phase-field block; owned DoFs only;
    * DoFs constrained in the Newton constraints (hanging nodes, Dirichlet
