@@ -361,6 +361,7 @@ namespace DuctileContact
     bool                    bound_engaged = false, bound_applied = false;
     types::global_dof_index n_on_bound  = 0;
     const auto              apply_bound = [&]() {
+      bound.record_diagonal(tangent);
       n_on_bound =
         bound.update_active_set(u, *step.old_solution, residual, constraints);
       bound.constrain(tangent, newton_rhs, u, *step.old_solution);
@@ -421,6 +422,9 @@ namespace DuctileContact
             return false;
         if (bounded && !bound_engaged)
           {
+            // The tangent in memory is the current iterate's (the trial's
+            // too: the line search assembles residuals only).
+            bound.record_diagonal(tangent);
             TrilinosWrappers::MPI::BlockVector c = residual;
             bound.to_complementarity(c, u, *step.old_solution, constraints);
             if (c.block(Block::phase_field).l2_norm() > tol[Block::phase_field])
@@ -504,8 +508,6 @@ namespace DuctileContact
           report.info      = assemble(step, constraints, targets);
         }
         bound_applied = false;
-        if (bounded)
-          bound.record_diagonal(tangent);
         if (bound_engaged)
           apply_bound();
         Norms        n     = block_norms();
