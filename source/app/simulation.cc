@@ -87,8 +87,7 @@ namespace DuctileContact
       std::make_unique<SystemAssembler>(*discretisation,
                                         bodies,
                                         parameters.boundary_conditions,
-                                        parameters.coupling.irreversibility !=
-                                          "bound");
+                                        parameters.coupling.crack_history());
     linear_solver =
       std::make_unique<LinearSolver>(parameters.linear_solver, *discretisation);
     {

@@ -354,7 +354,7 @@ namespace DuctileContact
     // 5 instead of 3 iterations (notched tension). Once engaged, the s rows
     // of the norms and the merit are C as well.
     const bool bounded =
-      coupling.irreversibility != "history" &&
+      coupling.phase_field_bound() &&
       discretisation.dofs_per_block[Block::phase_field] > 0 &&
       !frozen[Block::phase_field] && step.old_solution != nullptr;
     PhaseFieldBound         bound(discretisation);

@@ -35,6 +35,19 @@ namespace DuctileContact
     /// "history", "bound" or "history and bound".
     std::string irreversibility = "history and bound";
 
+    /// Whether the crack driver keeps the history maximum of psi^+.
+    bool
+    crack_history() const
+    {
+      return irreversibility != "bound";
+    }
+    /// Whether s >= s_n is enforced at the phase-field DoFs.
+    bool
+    phase_field_bound() const
+    {
+      return irreversibility != "history";
+    }
+
     void
     declare(dealii::ParameterHandler &prm);
     void
