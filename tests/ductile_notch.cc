@@ -1,6 +1,7 @@
 // Issue #4, the ductile notched specimen (coarse): the scene
 // prm/ductile_notch.prm (steel with gradient plasticity and a crack phase
-// field, a plate 1 x 2 mm slit to its centre, pulled) on the coarse mesh
+// field, a plate 1 x 2 mm slit to its centre, pulled) with the overrides of
+// tests/ductile_notch_coarse.prm, on the coarse mesh
 // tests/meshes/ductile_notch_coarse.msh (`prm/meshes/make_sent.py 0.1 0.2
 // ductile_notch_coarse.msh 1.0 2`: h = 0.1 mm, 162 Q2 cells) with the
 // lengths of the scene doubled to fit it (l_f = h = 0.1 mm, l_p = 0.2 mm,
@@ -48,31 +49,15 @@ main(int argc, char **argv)
 
   std::stringstream prm;
   prm << Testing::shipped_scene("ductile_notch.prm");
+  prm << Testing::file_text(SOURCE_DIR "/ductile_notch_coarse.prm");
   prm << R"(
 subsection Mesh
   subsection Gmsh
     set File name = )" SOURCE_DIR R"(/meshes/ductile_notch_coarse.msh
   end
 end
-subsection Body 1
-  subsection Plasticity
-    set Length scale = 2e-4
-  end
-  subsection Fracture
-    set Critical energy release rate = 2800
-    set Length scale                 = 1e-4
-  end
-end
 subsection Load stepping
-  set End time  = 0.68
-  set Time step = 0.04
-end
-subsection Newton
-  set Maximum iterations        = 15
-  set Maximum line search steps = 4
-end
-subsection Output
-  set Interval = 0
+  set End time = 0.68
 end
 )";
   const Testing::Table t = Testing::run_scene(prm.str(), "ductile_notch_run");

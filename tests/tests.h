@@ -20,6 +20,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -52,14 +53,23 @@ namespace Testing
     return table;
   }
 
+  /// Text of the file @p path; throws if it cannot be read.
+  inline std::string
+  file_text(const std::string &path)
+  {
+    std::ifstream in(path);
+    if (!in)
+      throw std::runtime_error("cannot read " + path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
   /// Text of the shipped scene prm/@p name (tests append overrides).
   inline std::string
   shipped_scene(const std::string &name)
   {
-    std::ifstream     in(SOURCE_DIR "/../prm/" + name);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
+    return file_text(SOURCE_DIR "/../prm/" + name);
   }
 
   /**

@@ -2,9 +2,9 @@
 # Irreversibility of the crack (issue #3): the history field of psi+ alone,
 # the bound s >= s_n at every phase-field DoF alone, and both
 # (Coupling/Irreversibility = history | bound | history and bound, the
-# default), on the coarse copy of
-# the ductile notched plate (the ctest ductile_notch's scene: h = l_f =
-# 0.1 mm, l_p = 0.2 mm, g_c = 2800 J/m^2), pulled to 22.8 um, past the
+# default), on the coarse copy of the ductile notched plate (the ctest
+# ductile_notch's scene, tests/ductile_notch_coarse.prm: h = l_f = 0.1 mm,
+# l_p = 0.2 mm, g_c = 2800 J/m^2), pulled to 22.8 um, past the
 # separation, where the history field alone lets the broken band relax.
 # report.py: smallest s change, Newton iterations, cut-backs, run time and
 # the differences of the force curves.
@@ -25,35 +25,21 @@ for mode in history bound "history and bound"; do
   mkdir -p "$dir"
   {
     cat "$project_root/prm/ductile_notch.prm"
+    cat "$project_root/tests/ductile_notch_coarse.prm"
     cat <<PRM
 subsection Mesh
   subsection Gmsh
     set File name = $project_root/tests/meshes/ductile_notch_coarse.msh
   end
 end
-subsection Body 1
-  subsection Plasticity
-    set Length scale = 2e-4
-  end
-  subsection Fracture
-    set Critical energy release rate = 2800
-    set Length scale                 = 1e-4
-  end
-end
 subsection Coupling
   set Irreversibility = $mode
 end
 subsection Load stepping
-  set End time  = 0.76
-  set Time step = 0.04
-end
-subsection Newton
-  set Maximum iterations        = 15
-  set Maximum line search steps = 4
+  set End time = 0.76
 end
 subsection Output
   set Directory = $dir
-  set Interval  = 0
 end
 PRM
   } > "$dir/scene.prm"
