@@ -11,6 +11,9 @@ import sys
 import numpy as np
 
 here = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+from runs_io import read_statistics, wall_time  # noqa: E402
+
 E, nu, R = 1e9, 0.3, 1.0
 E_star = E / (2 * (1 - nu ** 2))  # two equal bodies, plane strain
 
@@ -33,11 +36,11 @@ for d in sorted(glob.glob(os.path.join(here, "runs", "h*-*"))):
     m = re.match(r"h(\d+)-(\w+)$", os.path.basename(d))
     if not m or not os.path.exists(os.path.join(d, "statistics")):
         continue
-    if "Total wallclock" not in open(os.path.join(d, "screen.txt")).read():
+    wall = wall_time(os.path.join(d, "screen.txt"))
+    if wall is None:
         continue  # still running or failed
-    lines = [l for l in open(os.path.join(d, "statistics")).read().split("\n") if l.strip()]
-    names = lines[0].split()
-    last = dict(zip(names, map(float, lines[-1].split())))
+    table = read_statistics(os.path.join(d, "statistics"))
+    last = table[-1]
     step = int(last["step"])
     nodes = np.loadtxt(os.path.join(d, f"contact1_{step:05d}.txt"), skiprows=1)
     thickness = nodes[:, 2].max()  # the slab is one element thick
@@ -47,9 +50,8 @@ for d in sorted(glob.glob(os.path.join(here, "runs", "h*-*"))):
     a, p0 = fit(nodes, a_h)
     centre = nodes[(nodes[:, 3] < 1e-12) & (nodes[:, 6] > 0), 6].max()
     screen = open(os.path.join(d, "screen.txt")).read()
-    wall = float(re.search(r"Total wallclock time elapsed since start\s*\|\s*([\d.e+-]+)s", screen).group(1))
     dofs = int(re.search(r"DoFs: (\d+)", screen).group(1))
-    newton = int(sum(float(l.split()[names.index("newton_iterations")]) for l in lines[1:]))
+    newton = int(sum(row["newton_iterations"] for row in table))
     rows.append(dict(ratio=int(m.group(1)), basis=m.group(2), dofs=dofs, P=P, a=a, a_h=a_h,
                      p0=p0, p0_h=p0_h, centre=centre, wall=wall, newton=newton,
                      pen=last["contact1_max_penetration"]))
@@ -83,8 +85,7 @@ l.legend(fontsize=7)
 for x in rows:
     if x["basis"] == "dual" or x["ratio"] == 8:
         d = os.path.join(here, "runs", f"h{x['ratio']}-{x['basis']}")
-        lines = [q for q in open(os.path.join(d, "statistics")).read().split("\n") if q.strip()]
-        step = int(float(lines[-1].split()[0]))
+        step = int(read_statistics(os.path.join(d, "statistics"))[-1]["step"])
         n = np.loadtxt(os.path.join(d, f"contact1_{step:05d}.txt"), skiprows=1)
         n = n[(n[:, 2] < 1e-12) & (n[:, 6] > 0)]
         n = n[np.argsort(n[:, 3])]
