@@ -9,6 +9,9 @@ import re
 import sys
 
 here = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+from runs_io import read_statistics  # noqa: E402
+
 lf_mm = sys.argv[2] if len(sys.argv) > 2 else "0.05"
 root = os.path.join(here, "runs", "lf" + lf_mm)
 suffix = "" if lf_mm == "0.05" else "_lf" + lf_mm
@@ -17,9 +20,7 @@ plot_png = os.path.join(here, f"sent{suffix}.png")
 
 
 def load(run):
-    lines = open(os.path.join(run, "statistics")).read().strip().split("\n")
-    names = lines[0].split()
-    rows = [dict(zip(names, map(float, l.split()))) for l in lines[1:]]
+    rows = read_statistics(os.path.join(run, "statistics"))
     screen = open(os.path.join(run, "screen.txt")).read()
     m = re.match(r"q(\d)-h(\d+)-(\w+)-([\w-]+?)-dt([\d.]+)(?:-box(\d+))?$", os.path.basename(run))
     mesh = re.search(r"File name = .*_h([\d.e-]+)_b", open(os.path.join(run, "scene.prm")).read())
@@ -28,8 +29,22 @@ def load(run):
     force = [r["F2_y"] / thickness_mm / 1e3 for r in rows]
     disp = [r["u2_y"] * 1e3 for r in rows]  # mm
     k = max(range(len(force)), key=lambda i: force[i]) if force else 0
-    # the peak is known once a later step shows the force falling
-    complete = k < len(force) - 1
+    # The peak is known once a later step shows the force falling, or when
+    # the run ended at a limit point: the load step was halved below the
+    # minimum without convergence. Then the limit point lies between the
+    # last converged load and the smallest failed one after it, and a force
+    # still rising there is bracketed by extrapolating the last slope.
+    times = [r["time"] for r in rows]
+    limit = None
+    if "would have to be smaller than 'Load stepping/Minimum time step'" in screen and len(rows) > 2:
+        failed = [float(t) for t in re.findall(r"step at t = ([\d.e+-]+) failed", screen)]
+        above = [t for t in failed if t > times[-1]]
+        if above:
+            t_fail = min(above)
+            slope = (force[-1] - force[-2]) / (times[-1] - times[-2])
+            upper = force[-1] + max(slope, 0.) * (t_fail - times[-1]) if k == len(force) - 1 else force[k]
+            limit = dict(t_last=times[-1], t_fail=t_fail, upper=upper)
+    complete = k < len(force) - 1 or limit is not None
     # Cost of finding the peak: up to the step after it (the first step that
     # shows the force falling); what a run does after that (cut-backs at the
     # limit point, the crack running) is not part of the comparison.
@@ -45,7 +60,7 @@ def load(run):
                 cutbacks=int(sum(r["cutbacks"] for r in rows[:k + 2])),
                 steps=min(k + 2, len(rows)) - 1, assembly=last.get("assembly_time", 0.),
                 solve=last.get("solve_time", 0.), wall=last.get("wall_time", 0.),
-                complete=complete, force=force, disp=disp)
+                complete=complete, limit=limit, force=force, disp=disp)
 
 
 runs = [load(r) for r in sorted(glob.glob(os.path.join(root, "q*")))
@@ -58,14 +73,22 @@ for r in runs:
 out = open(results_md, "w")
 out.write(f"SENT slab, l_f = {lf_mm} mm; reference: {ref['name']} "
           f"(F_max = {ref['peak']:.5f} kN/mm at u = {ref['u_peak']:.4g} mm, {ref['dofs']} DoFs)\n\n")
-out.write("Counts and times up to the step after the peak.\n\n")
-out.write("| run | DoFs | F_max kN/mm | u at F_max mm | error vs ref | steps | Newton its | "
-          "alternations | linear its / Newton | cut-backs | assembly s | solve s | wall s |\n")
-out.write("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+out.write("Counts and times up to the step after the peak (or to the limit point). Limit point: "
+          "the run stopped there (the load step halved below its minimum); t from the last "
+          "converged to the first failed load, and the force bracket (F_max and the last "
+          "slope extrapolated to the failed load, where the force was still rising).\n\n")
+out.write("| run | DoFs | F_max kN/mm | u at F_max mm | error vs ref | limit point t | F_max bracket kN/mm "
+          "| steps | Newton its | alternations | linear its / Newton | cut-backs | assembly s | solve s "
+          "| wall s |\n")
+out.write("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
 for r in sorted(runs, key=lambda r: (r["dt"], r["degree"], r["ratio"], r["strategy"], r["solver"])):
     flag = "" if r["complete"] else " (incomplete)"
+    lim = r["limit"]
+    lim_t = f"[{lim['t_last']:.6g}, {lim['t_fail']:.6g}]" if lim else "-"
+    lim_f = f"[{r['peak']:.5f}, {lim['upper']:.5f}]" if lim else "-"
     out.write(f"| {r['name']}{flag} | {r['dofs']} | {r['peak']:.5f} | {r['u_peak']:.4g} | "
-              f"{r['error']:.2e} | {r['steps']} | {r['newton']} | "
+              f"{r['error']:.2e} | {lim_t} | {lim_f} | "
+              f"{r['steps']} | {r['newton']} | "
               f"{r['stag'] if r['strategy'].startswith('staggered') else '-'} | "
               f"{r['linear'] / max(r['newton'], 1):.1f} | "
               f"{r['cutbacks']} | {r['assembly']:.1f} | {r['solve']:.1f} | {r['wall']:.1f} |\n")
