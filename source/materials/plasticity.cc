@@ -1,5 +1,6 @@
 #include <deal.II/differentiation/ad.h>
 
+#include <ductile_contact/core/ad_value.h>
 #include <ductile_contact/materials/degradation.h>
 #include <ductile_contact/materials/plasticity.h>
 
@@ -17,18 +18,6 @@ namespace DuctileContact
     /// eps / y_0 of the flow direction at points that do not yield (see
     /// plastic_update()).
     constexpr double elastic_direction_floor = 0.1;
-
-    inline double
-    value_of(const double x)
-    {
-      return x;
-    }
-
-    inline double
-    value_of(const ADNumber &x)
-    {
-      return x.val();
-    }
 
     template <typename Number>
     Number

@@ -2,6 +2,8 @@
 
 #include <deal.II/base/config.h>
 
+#include <ductile_contact/core/ad_value.h>
+
 #include <Sacado.hpp>
 
 namespace DuctileContact
@@ -15,16 +17,4 @@ namespace DuctileContact
    * contact geometry works on plain arrays).
    */
   using ContactAD = Sacado::Fad::SFad<double, 54>;
-
-  inline double
-  value_of(const double x)
-  {
-    return x;
-  }
-
-  inline double
-  value_of(const ContactAD &x)
-  {
-    return x.val();
-  }
 } // namespace DuctileContact
