@@ -97,7 +97,7 @@ if [[ "$lf_mm" == "0.0075" ]]; then
   run 2 2 monolithic gmres-amg 0.02 6
   run 2 2 monolithic direct 0.05 6
   run 2 1 monolithic direct 0.05 6
-  run 2 1 monolithic gmres-amg 0.02 10
+  run 2 1 monolithic direct 0.05 10
   run 2 1 monolithic gmres-amg 0.01 6
   /usr/bin/python3 "$here/report.py" "$here" "$lf_mm"
   exit 0
