@@ -8,7 +8,11 @@
 //     the final forces must equal those of a 10-step run (hyperelasticity is
 //     path independent), Newton must converge at a rate > 1.6 in each step,
 //     and the energy-balance residual W_ext - Psi must shrink like dt^2
-//     (ratio > 3 when the step is halved).
+//     (ratio > 3 when the step is halved);
+//  C. the step controller after a cut-back when no step is easy (Easy step
+//     Newton iterations = 1): with Growth after accepted steps = 2 the
+//     increment grows, each time after two accepted steps at it; with 0 it
+//     never grows again.
 #include "tests.h"
 
 #include <cmath>
@@ -138,5 +142,60 @@ main(int argc, char **argv)
     out << "energy residual shrinks like dt^2 (ratio > 3): "
         << Testing::yes_no(r10 / r20 > 3.) << std::endl;
     std::cout << "energy residuals " << r10 << " " << r20 << std::endl;
+  }
+
+  // C. Growth after a run of accepted (not easy) steps.
+  {
+    const std::string top =
+      "subsection Boundary 5\n  set Constrained components = x, y, z\n"
+      "  set Displacement = 0.3*sqrt(t); 0; -0.5*sqrt(t)\nend\n";
+    const auto stepping = [](const unsigned int run) {
+      return "subsection Load stepping\n  set Time step = 1\n"
+             "  set Growth factor = 2\n  set Easy step Newton iterations = 1\n"
+             "  set Growth after accepted steps = " +
+             std::to_string(run) +
+             "\nend\nsubsection Newton\n  set Relative tolerance = 1e-11\n"
+             "  set Maximum iterations = 3\nend\n";
+    };
+    const auto grows = Testing::run_scene(column(top, stepping(2)), "run2");
+    const auto stays = Testing::run_scene(column(top, stepping(0)), "run0");
+
+    // Accepted increments (row 0 is the initial state).
+    const auto increments = [](const Testing::Table &t) {
+      return std::vector<double>(t.at("dt").begin() + 1, t.at("dt").end());
+    };
+    const std::vector<double> dt2      = increments(grows);
+    const std::vector<double> dt0      = increments(stays);
+    double                    cutbacks = 0, easy = 0;
+    for (const auto *t : {&grows, &stays})
+      for (std::size_t i = 1; i < t->at("step").size(); ++i)
+        {
+          cutbacks += t->at("cutbacks")[i];
+          easy += t->at("newton_iterations")[i] <= 1 ? 1 : 0;
+        }
+    out << "both runs were cut back and had no easy step: "
+        << Testing::yes_no(cutbacks > 0 && easy == 0) << std::endl;
+    unsigned int growths   = 0;
+    bool         after_two = true;
+    for (std::size_t i = 1; i < dt2.size(); ++i)
+      if (dt2[i] > dt2[i - 1])
+        {
+          ++growths;
+          after_two = after_two && i >= 2 && dt2[i - 1] == dt2[i - 2];
+        }
+    out << "Growth after accepted steps = 2: the increment grows, each time "
+           "after two steps at it: "
+        << Testing::yes_no(growths > 0 && after_two) << std::endl;
+    bool never = true;
+    for (std::size_t i = 1; i < dt0.size(); ++i)
+      never = never && dt0[i] <= dt0[i - 1];
+    out << "Growth after accepted steps = 0: it never grows: "
+        << Testing::yes_no(never) << std::endl;
+    out << "both end in the same state (1e-8): "
+        << Testing::yes_no(
+             Testing::relative_error(grows.at("F5_z").back(),
+                                     stays.at("F5_z").back(),
+                                     std::abs(stays.at("F5_z").back())) < 1e-8)
+        << std::endl;
   }
 }

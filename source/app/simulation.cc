@@ -293,6 +293,7 @@ namespace DuctileContact
       {
         statistics.add("fracture_energy", committed.fracture_energy);
         statistics.add("fracture_viscous_work", fracture_viscous_work);
+        statistics.add("history_driving_work", history_driving_work);
         statistics.add("max_s", max_phase_field);
         statistics.add("min_s_change", min_phase_field_change);
       }
@@ -401,7 +402,9 @@ namespace DuctileContact
     TrilinosWrappers::MPI::BlockVector last_increment = u;
     double                             last_dt        = 0.;
 
-    unsigned int cutbacks = 0;
+    unsigned int cutbacks             = 0;
+    unsigned int same_increment_steps = 0;
+    double       last_accepted_dt     = 0.;
     while (t < T - eps)
       {
         const double                             dt_try = std::min(dt, T - t);
@@ -446,6 +449,7 @@ namespace DuctileContact
           contact->commit();
         plastic_work += committed.plastic_work_increment;
         fracture_viscous_work += committed.fracture_viscous_work_increment;
+        history_driving_work += committed.history_work_increment;
         if (discretisation->dofs_per_block[Block::phase_field] > 0)
           {
             TrilinosWrappers::MPI::Vector ds = u.block(Block::phase_field);
@@ -489,9 +493,20 @@ namespace DuctileContact
               << elapsed / t * (T - t) << " s left" << std::defaultfloat
               << std::setprecision(6) << std::endl;
 
-        cutbacks = 0;
-        if (report.iterations <= ls.easy_newton_steps)
-          dt = std::min(dt_try * ls.growth_factor, ls.time_step);
+        // A run of accepted steps at one increment; a cut-back or a change
+        // of the increment starts a new run.
+        same_increment_steps = (cutbacks == 0 && dt_try == last_accepted_dt)
+                                 ? same_increment_steps + 1
+                                 : 1;
+        last_accepted_dt     = dt_try;
+        cutbacks             = 0;
+        if (report.iterations <= ls.easy_newton_steps ||
+            (ls.steps_before_growth > 0 &&
+             same_increment_steps >= ls.steps_before_growth))
+          {
+            dt = std::min(dt_try * ls.growth_factor, ls.time_step);
+            same_increment_steps = 0;
+          }
         else
           dt = dt_try;
       }

@@ -36,6 +36,16 @@ namespace DuctileContact
                       "iterations counts as easy.",
                       Patterns::Integer(1));
     prm.add_parameter(
+      "Growth after accepted steps",
+      steps_before_growth,
+      "The increment also grows (by the growth factor) after this many "
+      "steps in a row were accepted at it, however many Newton iterations "
+      "they took: a phase where every step needs more than the easy count "
+      "(a running crack, a cut-back deep into a hard stretch) would "
+      "otherwise keep the small increment to the end. A step that then "
+      "fails is cut back as usual. 0: only easy steps grow the increment.",
+      Patterns::Integer(0));
+    prm.add_parameter(
       "Predictor",
       predictor,
       "First guess of every unknown (u, alpha, s) at the start of a step. "

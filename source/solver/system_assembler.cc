@@ -407,7 +407,11 @@ namespace DuctileContact
                   info.fracture_viscous_work_increment +=
                     eta_f * rate * rate * step.dt * JxW;
                   if (history_new)
-                    history_new[q].psi_plus_max = psi_H;
+                    {
+                      history_new[q].psi_plus_max = psi_H;
+                      info.history_work_increment +=
+                        -g1 * (psi_H - m.psi_plus) * (s[q] - s_old[q]) * JxW;
+                    }
                   const double scale = body.crack.critical_energy_release_rate /
                                        (2. * body.crack.length_scale);
                   // d(g' psi_H)/ds = g'' psi_H + g' dpsi^+/ds when loading
@@ -560,8 +564,10 @@ namespace DuctileContact
                              info.residual_scale[Block::hardening],
                              info.residual_scale[Block::phase_field],
                              info.residual_magnitude[Block::hardening],
-                             info.residual_magnitude[Block::phase_field]};
+                             info.residual_magnitude[Block::phase_field],
+                             info.history_work_increment};
     Utilities::MPI::sum(sums, comm, sums);
+    info.history_work_increment                  = sums[10];
     info.stored_energy                           = sums[0];
     info.hardening_energy                        = sums[1];
     info.fracture_energy                         = sums[2];

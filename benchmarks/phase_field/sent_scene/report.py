@@ -27,9 +27,27 @@ with open(os.path.join(here, "results.md"), "w") as out:
     if "fracture_energy" in last:
         out.write(f"| fracture energy g_c int gamma [J] | {last['fracture_energy']:.4e} "
                   f"(g_c x ligament x thickness = {g_c * ligament * thickness:.4e}) |\n")
-    for key in ("external_work", "stored_energy", "fracture_viscous_work", "energy_residual"):
+    for key in ("external_work", "stored_energy", "fracture_viscous_work", "energy_residual",
+                "history_driving_work"):
         if key in last:
             out.write(f"| {key.replace('_', ' ')} [J] | {last[key]:.4e} |\n")
+    if "history_driving_work" in last:
+        # The balance with the history driver's work: what is left is the
+        # time discretisation (backward Euler over steps where s jumps).
+        W = last["external_work"]
+        rest = [r["energy_residual"] + r["history_driving_work"] for r in rows]
+        worst = max(range(len(rows)), key=lambda i: abs(rest[i]))
+        out.write(f"| energy residual + history driving work [J] | {rest[-1]:.4e} at the end "
+                  f"({rest[-1] / W:.1%} of W_ext; largest {rest[worst]:.4e} at t = "
+                  f"{rows[worst]['time']:.4f}); energy residual alone {last['energy_residual'] / W:.1%} |\n")
+    its = [int(r["newton_iterations"]) for r in rows]
+    sep = [i for i, r in enumerate(rows) if r["time"] > rows[peak]["time"] and F[i] < 0.1 * F[peak]]
+    if sep:
+        after = its[sep[0]:]
+        out.write(f"| after the separation (F < 10 % of F_max, from t = {rows[sep[0]]['time']:.4f}) | "
+                  f"{len(after)} steps, {sum(after)} Newton iterations, "
+                  f"{sum(int(r['cutbacks']) for r in rows[sep[0]:])} cut-backs, "
+                  f"last dt {last['dt']:.3g} |\n")
     out.write(f"| load steps, Newton iterations, cut-backs | {len(rows) - 1}, "
               f"{sum(int(r['newton_iterations']) for r in rows)}, {sum(int(r['cutbacks']) for r in rows)} |\n")
     if wall:

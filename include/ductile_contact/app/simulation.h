@@ -105,6 +105,8 @@ namespace DuctileContact
     double            external_work         = 0.;
     double            plastic_work          = 0.;
     double            fracture_viscous_work = 0.;
+    /// Sum of AssemblyInfo::history_work_increment over accepted steps.
+    double history_driving_work = 0.;
     /// min over s DoFs of s_n+1 - s_n of the last step (irreversibility).
     double min_phase_field_change = 0.;
     double max_phase_field        = 0.;

@@ -9,8 +9,9 @@ namespace DuctileContact
   /**
    * Subsection `Load stepping`: quasi-static pseudo time t in [0, End time];
    * all boundary data are functions of t. A step whose Newton iteration
-   * fails is repeated with half the step (cut-back); after easy steps the
-   * step grows again, never beyond `Time step`.
+   * fails is repeated with half the step (cut-back); after easy steps, or
+   * after a run of accepted steps at the same increment, the step grows
+   * again, never beyond `Time step`.
    */
   struct LoadSteppingParameters
   {
@@ -19,6 +20,9 @@ namespace DuctileContact
     double       minimum_time_step = 1.e-6;
     double       growth_factor     = 1.5;
     unsigned int easy_newton_steps = 5;
+    /// Accepted steps in a row at one increment after which it grows even
+    /// if none was easy (0: never).
+    unsigned int steps_before_growth = 4;
     /// constant | linear: first guess of a step (see declare()).
     std::string predictor = "constant";
 

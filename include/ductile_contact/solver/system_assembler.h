@@ -44,6 +44,16 @@ namespace DuctileContact
     /// computed when the history is committed (AssemblyTargets::history).
     double plastic_work_increment          = 0.;
     double fracture_viscous_work_increment = 0.;
+    /// Of the committed step [J]: the work of the crack-driver history
+    /// beyond the current elastic state, int (-g_k'(s)) (psi_H - psi^+)
+    /// (s - s_n) dV >= 0 (psi_H the history maximum of psi^+, model.md
+    /// (27)). It is nonzero where psi^+ has fallen below its maximum while s
+    /// still grows (material unloading beside a running crack). The history
+    /// driver is not the derivative of an energy, so the energy balance
+    /// W_ext = Psi^e + plastic work + fracture energy + viscous work misses
+    /// about minus this (to first order in dt); see the statistics column
+    /// history_driving_work.
+    double history_work_increment = 0.;
     /// Largest alpha at a quadrature point, and the smallest alpha -
     /// alpha_n over the yielding ones (chi_p = 1; +inf if none yields): a
     /// negative value is plastic flow reversed by the gradient term.
