@@ -78,11 +78,12 @@ for eta in sorted(runs, key=float):
 
         def f(x, fmt):
             return "–" if x is None or (isinstance(x, float) and math.isnan(x)) else format(x, fmt)
+        ran = f(wt, '.0f') if done else f"stopped at t = {last['time']:.4g}"
         r12 = at(rows, 1.2, "energy_residual") / at(rows, 1.2, "external_work")
         df12 = at(rows, 1.2, "fracture_viscous_work") / at(rows, 1.2, "external_work")
         out.append(
             f"| {dt:g} | {len(rows) - 1} | {int(sum(r['newton_iterations'] for r in rows))} | "
-            f"{int(sum(r['cutbacks'] for r in rows))} | {f(wt, '.0f') if done else 'stopped'} | "
+            f"{int(sum(r['cutbacks'] for r in rows))} | {ran} | "
             f"{fmax_row['F2_y']:.4f} | {fmax_row['time']:.4g} | "
             f"{cells[0][0]:+.2e} | {f(cells[0][1], '+.2e')} | {f(cells[0][2], '.2f')} | "
             f"{f(r12, '+.4f')} | {f(cells[1][0], '+.4f')} | {f(cells[1][1], '+.2e')} | {f(cells[1][2], '.2f')} | "
