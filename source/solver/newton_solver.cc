@@ -18,6 +18,14 @@ namespace DuctileContact
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// Sweeps of PhaseFieldBound::identify_active_set() per Newton
+    /// iteration; the coupled iteration goes on from the last set if the
+    /// sweeps have not settled (a set that cycles).
+    constexpr unsigned int max_active_set_sweeps = 20;
+  } // namespace
+
   NewtonSolver::NewtonSolver(
     const NewtonParameters              &parameters,
     const CouplingParameters            &coupling,
@@ -362,8 +370,20 @@ namespace DuctileContact
     types::global_dof_index n_on_bound  = 0;
     const auto              apply_bound = [&]() {
       bound.record_diagonal(tangent);
-      n_on_bound =
+      const types::global_dof_index n_first =
         bound.update_active_set(u, *step.old_solution, residual, constraints);
+      const unsigned int sweeps =
+        bound.identify_active_set(tangent,
+                                  newton_rhs,
+                                  u,
+                                  *step.old_solution,
+                                  constraints,
+                                  linear_solver.direct_solver(),
+                                  max_active_set_sweeps);
+      n_on_bound = bound.active_size();
+      verbose_out << "        active set on the s block: " << n_first << " -> "
+                  << n_on_bound << " DoFs in " << sweeps << " sweeps"
+                  << std::endl;
       bound.constrain(tangent, newton_rhs, u, *step.old_solution);
       bound.to_complementarity(residual, u, *step.old_solution, constraints);
       bound_applied = true;

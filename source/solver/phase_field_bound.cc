@@ -1,9 +1,12 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
 
 #include <ductile_contact/solver/phase_field_bound.h>
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 
 namespace DuctileContact
 {
@@ -50,6 +53,83 @@ namespace DuctileContact
           R[i] + diagonal[i] * (s_n[i] - s[i]) > 0.)
         active.add_index(i);
     active.compress();
+    return Utilities::MPI::sum(active.n_elements(),
+                               discretisation.dof_handler.get_communicator());
+  }
+
+
+
+  unsigned int
+  PhaseFieldBound::identify_active_set(
+    const TrilinosWrappers::BlockSparseMatrix &K,
+    const TrilinosWrappers::MPI::BlockVector  &newton_rhs,
+    const TrilinosWrappers::MPI::BlockVector  &u,
+    const TrilinosWrappers::MPI::BlockVector  &old,
+    const AffineConstraints<double>           &constraints,
+    const std::string                         &direct_solver,
+    const unsigned int                         max_sweeps)
+  {
+    const IndexSet &owned =
+      discretisation.owned_partitioning[Block::phase_field];
+    const MPI_Comm comm = discretisation.dof_handler.get_communicator();
+    const auto    &K_ss = K.block(Block::phase_field, Block::phase_field);
+    const auto    &s    = u.block(Block::phase_field);
+    const auto    &s_n  = old.block(Block::phase_field);
+    const auto    &b    = newton_rhs.block(Block::phase_field);
+
+    const IndexSet                 first = active;
+    TrilinosWrappers::SparseMatrix K_A;
+    TrilinosWrappers::MPI::Vector  rhs(owned, comm), delta(owned, comm),
+      r_lin(owned, comm);
+    for (unsigned int sweep = 1;; ++sweep)
+      {
+        K_A.copy_from(K_ss);
+        rhs = b;
+        for (const auto i : active)
+          {
+            K_A.clear_row(i, diagonal[i]);
+            rhs[i] = diagonal[i] * (s_n[i] - s[i]);
+          }
+        rhs.compress(VectorOperation::insert);
+        SolverControl                  control(1, 0.);
+        TrilinosWrappers::SolverDirect direct(
+          control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false, direct_solver));
+        try
+          {
+            direct.solve(K_A, delta, rhs);
+          }
+        catch (const std::exception &)
+          {
+            // E.g. MUMPS out of workspace on a large 3-D s block: keep the
+            // set of update_active_set(), the coupled iteration refines it.
+            active = first;
+            return 0;
+          }
+        // R_s + K_ss delta: zero on the free rows, the bound's reaction on
+        // the rows of A.
+        K_ss.vmult(r_lin, delta);
+        r_lin -= b;
+
+        IndexSet next(owned.size());
+        for (const auto i : owned)
+          if (!constraints.is_constrained(offset + i) &&
+              r_lin[i] + diagonal[i] * (s_n[i] - s[i] - delta[i]) > 0.)
+            next.add_index(i);
+        next.compress();
+        const bool repeated =
+          Utilities::MPI::min(next == active ? 1u : 0u, comm) == 1u;
+        active = next;
+        if (repeated || sweep == max_sweeps)
+          return sweep;
+      }
+  }
+
+
+
+  types::global_dof_index
+  PhaseFieldBound::active_size() const
+  {
     return Utilities::MPI::sum(active.n_elements(),
                                discretisation.dof_handler.get_communicator());
   }

@@ -8,6 +8,8 @@
 
 #include <ductile_contact/discretisation/discretisation.h>
 
+#include <string>
+
 namespace DuctileContact
 {
   /**
@@ -65,6 +67,37 @@ namespace DuctileContact
       const dealii::TrilinosWrappers::MPI::BlockVector &old,
       const dealii::TrilinosWrappers::MPI::BlockVector &residual,
       const dealii::AffineConstraints<double>          &constraints);
+
+    /**
+     * Refines A, starting from the A of update_active_set(), by the
+     * primal-dual active set iteration of the Newton step's linearised s
+     * equation with the other fields held: K_ss delta = -R_s on the free
+     * DoFs, delta_i = s_n,i - s_i on A (one sparse LU of the s-s block,
+     * Amesos @p direct_solver, per sweep), then A = { i : (R_s + K_ss
+     * delta)_i + K_ii (s_n,i - s_i - delta_i) > 0 }, until A repeats or
+     * after @p max_sweeps sweeps. Without it the coupled Newton iteration
+     * learns A one coupled solve at a time: the C0IP operator has no
+     * maximum principle, so holding a few DoFs lifts their neighbours above
+     * s_n, and the first A (all DoFs below s_n) is much larger than the
+     * final one (benchmarks/phase_field/energy_balance). @p K and
+     * @p newton_rhs (= -R, Newton constraints applied) are the fresh
+     * tangent and right-hand side, before constrain(). Returns the sweeps
+     * done (0 if the sparse LU failed: A stays that of update_active_set());
+     * active_size() is |A| after them.
+     */
+    unsigned int
+    identify_active_set(
+      const dealii::TrilinosWrappers::BlockSparseMatrix &K,
+      const dealii::TrilinosWrappers::MPI::BlockVector  &newton_rhs,
+      const dealii::TrilinosWrappers::MPI::BlockVector  &u,
+      const dealii::TrilinosWrappers::MPI::BlockVector  &old,
+      const dealii::AffineConstraints<double>           &constraints,
+      const std::string                                 &direct_solver,
+      const unsigned int                                 max_sweeps);
+
+    /// |A| summed over ranks.
+    dealii::types::global_dof_index
+    active_size() const;
 
     /// Replaces the rows of A in @p K and @p newton_rhs by the bound.
     void
