@@ -35,7 +35,9 @@ namespace DuctileContact
    * multiplier (e.g. s = 0 far from a crack, where round-off decides the
    * sign of R) count as converged on either side of A. NewtonSolver
    * engages the active set only once plain Newton has converged to a state
-   * whose C does not meet the tolerance.
+   * whose C does not meet the tolerance, and in every iteration with the
+   * bound refines A on the s block alone (identify_active_set()) before
+   * the coupled solve.
    *
    * With Coupling/Irreversibility = history and bound (the default) the
    * history field of psi^+ (model.md's default) acts as well: it keeps the
