@@ -4,7 +4,7 @@
 # output step in runs/, then report.py (force curve, energies, a picture of
 # s on the slab with scripts/vtu_slice.py).
 # Usage: benchmarks/phase_field/sent_scene/run.sh [NP]   (default 2 ranks;
-#        ~45 min on 2 cores)
+#        ~15 min on 2 cores)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
