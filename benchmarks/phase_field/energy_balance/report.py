@@ -16,6 +16,10 @@ here = sys.argv[1]
 sys.path.insert(0, os.path.join(here, "..", ".."))
 from runs_io import read_statistics, wall_time  # noqa: E402
 
+END_TIME = 1.2
+# The residuals followed across the increments: label, time, column.
+RESIDUALS = (("R(0.3)", 0.3, "energy_residual"), ("R_h(1.2)", END_TIME, "residual_h"))
+
 
 def at(rows, t, key):
     """Linear interpolation of a column at time t."""
@@ -28,6 +32,20 @@ def at(rows, t, key):
 
 def with_history(r):
     return r["energy_residual"] + r["history_driving_work"]
+
+
+def fraction(rows, t, key):
+    """A column at time t as a fraction of the external work then."""
+    return at(rows, t, key) / at(rows, t, "external_work")
+
+
+def finished(rows):
+    return abs(rows[-1]["time"] - END_TIME) < 1e-9
+
+
+def f(x, fmt):
+    """A table cell: x formatted, or a dash where it is missing."""
+    return "–" if x is None or (isinstance(x, float) and math.isnan(x)) else format(x, fmt)
 
 
 runs = {}
@@ -57,30 +75,19 @@ for eta in sorted(runs, key=float):
     prev = {}
     for dt, rows, wt in series:
         last = rows[-1]
-        done = abs(last["time"] - 1.2) < 1e-9
         fmax_row = max(rows, key=lambda r: r["F2_y"])
-        vals = {}
-        for key, t in (("R03", 0.3), ("Rh12", 1.2)):
-            col = "energy_residual" if key == "R03" else "residual_h"
-            vals[key] = at(rows, t, col) / at(rows, t, "external_work")
         cells = []
-        for key in ("R03", "Rh12"):
-            v = vals[key]
-            if key in prev:
-                delta = v - prev[key][0]
-                order = (math.log2(abs(prev[key][1] / delta))
-                         if prev[key][1] not in (None, 0.) and delta != 0 else None)
-                cells.append((v, delta, order))
-                prev[key] = (v, delta)
-            else:
-                cells.append((v, None, None))
-                prev[key] = (v, None)
-
-        def f(x, fmt):
-            return "–" if x is None or (isinstance(x, float) and math.isnan(x)) else format(x, fmt)
-        ran = f(wt, '.0f') if done else f"stopped at t = {last['time']:.4g}"
-        r12 = at(rows, 1.2, "energy_residual") / at(rows, 1.2, "external_work")
-        df12 = at(rows, 1.2, "fracture_viscous_work") / at(rows, 1.2, "external_work")
+        for key, t, col in RESIDUALS:
+            v = fraction(rows, t, col)
+            prev_v, prev_delta = prev.get(key, (None, None))
+            delta = None if prev_v is None else v - prev_v
+            order = (math.log2(abs(prev_delta / delta))
+                     if prev_delta not in (None, 0.) and delta != 0 else None)
+            cells.append((v, delta, order))
+            prev[key] = (v, delta)
+        ran = f(wt, '.0f') if finished(rows) else f"stopped at t = {last['time']:.4g}"
+        r12 = fraction(rows, END_TIME, "energy_residual")
+        df12 = fraction(rows, END_TIME, "fracture_viscous_work")
         out.append(
             f"| {dt:g} | {len(rows) - 1} | {int(sum(r['newton_iterations'] for r in rows))} | "
             f"{int(sum(r['cutbacks'] for r in rows))} | {ran} | "
@@ -102,13 +109,12 @@ fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.2))
 for eta, marker in zip(sorted(runs, key=float), "os^v"):
     # Runs to the end time only (a run that gave up also prints its timer).
     series = [(dt, rows, wt) for dt, rows, wt in sorted(runs[eta], key=lambda x: -x[0])
-              if wt is not None and abs(rows[-1]["time"] - 1.2) < 1e-9]
+              if wt is not None and finished(rows)]
     if not series:
         continue
     times = [wt for _, _, wt in series]
-    for key, col, style in (("R(0.3)", "energy_residual", "--"), ("R_h(1.2)", "residual_h", "-")):
-        t = 0.3 if key == "R(0.3)" else 1.2
-        err = [abs(at(rows, t, col) / at(rows, t, "external_work")) for _, rows, _ in series]
+    for (key, t, col), style in zip(RESIDUALS, ("--", "-")):
+        err = [abs(fraction(rows, t, col)) for _, rows, _ in series]
         left.loglog(times, err, style + marker, label=f"{key}, η_f = {eta}")
         for (dt, _, _), x, y in zip(series, times, err):
             left.annotate(f"{dt:g}", (x, y), fontsize=6, xytext=(3, 3), textcoords="offset points")
