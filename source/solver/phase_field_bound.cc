@@ -85,12 +85,7 @@ namespace DuctileContact
       {
         K_A.copy_from(K_ss);
         rhs = b;
-        for (const auto i : active)
-          {
-            K_A.clear_row(i, diagonal[i]);
-            rhs[i] = diagonal[i] * (s_n[i] - s[i]);
-          }
-        rhs.compress(VectorOperation::insert);
+        hold_active_rows(K_A, rhs, s, s_n);
         SolverControl                  control(1, 0.);
         TrilinosWrappers::SolverDirect direct(
           control,
@@ -143,14 +138,28 @@ namespace DuctileContact
     const TrilinosWrappers::MPI::BlockVector &u,
     const TrilinosWrappers::MPI::BlockVector &old) const
   {
-    const auto &s   = u.block(Block::phase_field);
-    const auto &s_n = old.block(Block::phase_field);
-    auto       &b   = rhs.block(Block::phase_field);
+    for (const auto i : active)
+      for (unsigned int c = 0; c < Block::n_blocks; ++c)
+        if (c != Block::phase_field)
+          K.block(Block::phase_field, c).clear_row(i, 0.);
+    hold_active_rows(K.block(Block::phase_field, Block::phase_field),
+                     rhs.block(Block::phase_field),
+                     u.block(Block::phase_field),
+                     old.block(Block::phase_field));
+  }
+
+
+
+  void
+  PhaseFieldBound::hold_active_rows(
+    TrilinosWrappers::SparseMatrix      &K_ss,
+    TrilinosWrappers::MPI::Vector       &b,
+    const TrilinosWrappers::MPI::Vector &s,
+    const TrilinosWrappers::MPI::Vector &s_n) const
+  {
     for (const auto i : active)
       {
-        for (unsigned int c = 0; c < Block::n_blocks; ++c)
-          K.block(Block::phase_field, c)
-            .clear_row(i, c == Block::phase_field ? diagonal[i] : 0.);
+        K_ss.clear_row(i, diagonal[i]);
         b[i] = diagonal[i] * (s_n[i] - s[i]);
       }
     b.compress(VectorOperation::insert);

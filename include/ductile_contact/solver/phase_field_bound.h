@@ -122,6 +122,16 @@ namespace DuctileContact
     remove_active_rows(dealii::TrilinosWrappers::MPI::BlockVector &v) const;
 
   private:
+    /// Replaces the rows of A in the s-s matrix @p K_ss and in @p b by the
+    /// bound reached after a full step, K_ii delta_i = K_ii (s_n,i - s_i);
+    /// the one definition of a held row, for constrain() and the sweeps of
+    /// identify_active_set().
+    void
+    hold_active_rows(dealii::TrilinosWrappers::SparseMatrix      &K_ss,
+                     dealii::TrilinosWrappers::MPI::Vector       &b,
+                     const dealii::TrilinosWrappers::MPI::Vector &s,
+                     const dealii::TrilinosWrappers::MPI::Vector &s_n) const;
+
     const Discretisation &discretisation;
     /// First DoF of the phase-field block in the global numbering.
     const dealii::types::global_dof_index offset;
