@@ -27,7 +27,7 @@
 
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/phase_field/c0ip.h>
-#include <ductile_contact/solver/phase_field_bound.h>
+#include <ductile_contact/phase_field/phase_field_bound.h>
 
 #include "tests.h"
 

@@ -6,10 +6,11 @@
 #include <ductile_contact/app/application.h>
 #include <ductile_contact/app/simulation.h>
 #include <ductile_contact/contact/contact_problem.h>
+#include <ductile_contact/coupled/coupled_problem.h>
+#include <ductile_contact/coupled/coupled_solver.h>
 #include <ductile_contact/output/solution_writer.h>
 #include <ductile_contact/solver/linear_solver.h>
 #include <ductile_contact/solver/newton_solver.h>
-#include <ductile_contact/solver/system_assembler.h>
 
 #include <cmath>
 #include <iomanip>
@@ -102,17 +103,22 @@ namespace DuctileContact
                                                    bodies);
         contact->setup();
       }
+    problem =
+      std::make_unique<CoupledProblem>(*discretisation,
+                                       *assembler,
+                                       parameters.boundary_conditions,
+                                       parameters.coupling,
+                                       parameters.linear_solver.direct_solver,
+                                       force_scale,
+                                       verbose_out,
+                                       timer,
+                                       contact.get());
+    problem->setup();
     newton = std::make_unique<NewtonSolver>(parameters.newton,
-                                            parameters.coupling,
-                                            *discretisation,
-                                            *assembler,
                                             *linear_solver,
-                                            parameters.boundary_conditions,
-                                            force_scale,
-                                            verbose_out,
-                                            timer,
-                                            contact.get());
-    newton->setup();
+                                            NewtonMonitor{verbose_out, timer});
+    solver = std::make_unique<CoupledSolver>(
+      parameters.coupling, *problem, *newton, verbose_out, contact.get());
     writer = std::make_unique<SolutionWriter>(parameters.output.directory,
                                               *discretisation,
                                               bodies);
@@ -229,11 +235,11 @@ namespace DuctileContact
 
 
   void
-  Simulation::record_step(const unsigned int  step,
-                          const double        t,
-                          const double        dt,
-                          const NewtonReport &report,
-                          const unsigned int  cutbacks)
+  Simulation::record_step(const unsigned int step,
+                          const double       t,
+                          const double       dt,
+                          const StepReport  &report,
+                          const unsigned int cutbacks)
   {
     statistics.add("step", step);
     statistics.add("time", t);
@@ -389,7 +395,7 @@ namespace DuctileContact
     u            = 0;
     old_solution = u;
     committed    = commit({0., ls.time_step, &old_solution, &history});
-    record_step(0, 0., 0., NewtonReport(), 0);
+    record_step(0, 0., 0., StepReport(), 0);
     if (interval > 0)
       {
         writer->write(0, 0., u_ghosted, cell_quantities);
@@ -411,9 +417,8 @@ namespace DuctileContact
         const TrilinosWrappers::MPI::BlockVector u_old  = u;
         if (ls.predictor == "linear" && last_dt > 0.)
           u.add(dt_try / last_dt, last_increment);
-        const StepData step_data{t + dt_try, dt_try, &old_solution, &history};
-        const NewtonReport report =
-          newton->solve_step(step_data, u, internal_force);
+        const StepData   step_data{t + dt_try, dt_try, &old_solution, &history};
+        const StepReport report = solver->solve_step(step_data, u);
 
         if (!report.converged)
           {
@@ -436,6 +441,7 @@ namespace DuctileContact
           }
 
         // Accepted step.
+        internal_force = problem->internal_force();
         t += dt_try;
         ++step;
         last_increment = u;

@@ -5,11 +5,11 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/rtree.h>
 
+#include <ductile_contact/assembly/scatter.h>
 #include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/contact/contact_writer.h>
 #include <ductile_contact/contact/mortar_operators.h>
 #include <ductile_contact/core/input_error.h>
-#include <ductile_contact/solver/scatter.h>
 
 #include <algorithm>
 #include <cmath>

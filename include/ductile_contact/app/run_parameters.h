@@ -3,11 +3,11 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <ductile_contact/contact/contact_parameters.h>
+#include <ductile_contact/coupled/coupling_parameters.h>
 #include <ductile_contact/discretisation/boundary_condition.h>
 #include <ductile_contact/materials/body_parameters.h>
 #include <ductile_contact/mesh/mesh_parameters.h>
 #include <ductile_contact/output/output_parameters.h>
-#include <ductile_contact/solver/coupling_parameters.h>
 #include <ductile_contact/solver/solver_parameters.h>
 
 #include <deque>

@@ -6,12 +6,12 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <ductile_contact/app/run_parameters.h>
+#include <ductile_contact/assembly/quadrature_history.h>
+#include <ductile_contact/assembly/system_assembler.h>
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/output/probe_points.h>
 #include <ductile_contact/output/statistics.h>
 #include <ductile_contact/output/tee_stream.h>
-#include <ductile_contact/solver/quadrature_history.h>
-#include <ductile_contact/solver/system_assembler.h>
 
 #include <map>
 #include <memory>
@@ -20,9 +20,11 @@
 namespace DuctileContact
 {
   class ContactProblem;
+  class CoupledProblem;
+  class CoupledSolver;
   class LinearSolver;
   class NewtonSolver;
-  struct NewtonReport;
+  struct StepReport;
   class SolutionWriter;
 
   /**
@@ -55,11 +57,11 @@ namespace DuctileContact
     void
     setup();
     void
-    record_step(const unsigned int  step,
-                const double        t,
-                const double        dt,
-                const NewtonReport &report,
-                const unsigned int  cutbacks);
+    record_step(const unsigned int step,
+                const double       t,
+                const double       dt,
+                const StepReport  &report,
+                const unsigned int cutbacks);
     /// Stores the history of the accepted state u (step @p step_data) and
     /// returns its energies; also refreshes the output cell data.
     AssemblyInfo
@@ -89,7 +91,9 @@ namespace DuctileContact
     std::unique_ptr<LinearSolver>                                linear_solver;
     std::unique_ptr<ContactProblem>                              contact;
     std::unique_ptr<ProbePoints>                                 probes;
+    std::unique_ptr<CoupledProblem>                              problem;
     std::unique_ptr<NewtonSolver>                                newton;
+    std::unique_ptr<CoupledSolver>                               solver;
     std::unique_ptr<SolutionWriter>                              writer;
     Statistics                                                   statistics;
 

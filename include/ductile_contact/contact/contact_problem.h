@@ -6,11 +6,11 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <ductile_contact/assembly/system_assembler.h>
 #include <ductile_contact/contact/contact_parameters.h>
 #include <ductile_contact/contact/contact_surface.h>
 #include <ductile_contact/contact/nodal_contact.h>
 #include <ductile_contact/materials/body_parameters.h>
-#include <ductile_contact/solver/system_assembler.h>
 
 #include <deque>
 #include <map>

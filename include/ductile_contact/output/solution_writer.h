@@ -2,9 +2,9 @@
 
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <ductile_contact/assembly/system_assembler.h>
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/materials/body_parameters.h>
-#include <ductile_contact/solver/system_assembler.h>
 
 #include <map>
 #include <string>

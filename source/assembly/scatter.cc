@@ -1,7 +1,7 @@
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
-#include <ductile_contact/solver/scatter.h>
+#include <ductile_contact/assembly/scatter.h>
 
 namespace DuctileContact
 {

@@ -7,10 +7,10 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <ductile_contact/assembly/quadrature_history.h>
 #include <ductile_contact/discretisation/boundary_condition.h>
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/materials/body_parameters.h>
-#include <ductile_contact/solver/quadrature_history.h>
 
 #include <array>
 #include <deque>

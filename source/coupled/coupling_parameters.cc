@@ -1,4 +1,4 @@
-#include <ductile_contact/solver/coupling_parameters.h>
+#include <ductile_contact/coupled/coupling_parameters.h>
 
 namespace DuctileContact
 {

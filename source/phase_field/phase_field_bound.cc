@@ -2,7 +2,7 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
-#include <ductile_contact/solver/phase_field_bound.h>
+#include <ductile_contact/phase_field/phase_field_bound.h>
 
 #include <algorithm>
 #include <cmath>

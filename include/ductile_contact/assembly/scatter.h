@@ -4,7 +4,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <ductile_contact/solver/system_assembler.h>
+#include <ductile_contact/assembly/system_assembler.h>
 
 #include <vector>
 

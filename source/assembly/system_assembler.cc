@@ -6,12 +6,12 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/physics/elasticity/standard_tensors.h>
 
+#include <ductile_contact/assembly/scatter.h>
+#include <ductile_contact/assembly/system_assembler.h>
 #include <ductile_contact/materials/body_material.h>
 #include <ductile_contact/materials/degradation.h>
 #include <ductile_contact/materials/neo_hooke.h>
 #include <ductile_contact/phase_field/c0ip.h>
-#include <ductile_contact/solver/scatter.h>
-#include <ductile_contact/solver/system_assembler.h>
 
 #include <cmath>
 

@@ -1,0 +1,182 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <ductile_contact/assembly/system_assembler.h>
+#include <ductile_contact/coupled/coupling_parameters.h>
+#include <ductile_contact/discretisation/boundary_condition.h>
+#include <ductile_contact/discretisation/discretisation.h>
+#include <ductile_contact/phase_field/phase_field_bound.h>
+#include <ductile_contact/solver/nonlinear_problem.h>
+
+#include <array>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace DuctileContact
+{
+  class ContactProblem;
+
+  /**
+   * The coupled problem R(u, alpha, s) = 0 of one load step (model.md
+   * sections 2-5) as Newton sees it (NonlinearProblem): it owns the system
+   * (sparsity pattern with the C0IP and contact couplings, tangent,
+   * right-hand side, residual, internal force) and combines the bulk cells
+   * and C0IP faces (SystemAssembler), the contact pairs (ContactProblem,
+   * if any) and the irreversibility bound s >= s_n (PhaseFieldBound, if
+   * Coupling/Irreversibility asks for it).
+   *
+   * Prescribed displacements enter through the Newton constraints
+   * (make_newton_constraints()): each iterate's update moves the boundary
+   * values to those of the step. Blocks marked by freeze() keep their
+   * values (the staggered scheme).
+   *
+   * Block tolerances (ResidualEvaluation): for u, rtol ||f_int,u|| + atol
+   * force_scale (f_int holds the reactions, so the test is relative to the
+   * load carried); for alpha and s, rtol S_b (S_b the local terms at
+   * alpha = 1 or s = 1, AssemblyInfo::residual_scale).
+   *
+   * The bound is engaged lazily: Newton iterates without it, and only if
+   * its converged state violates the bound's KKT conditions (the
+   * complementarity residual C of PhaseFieldBound above the s tolerance)
+   * is the active set switched on (converged() returns false); from then
+   * on the s rows of the norms are C, and every tangent assembly refines
+   * the active set on the s block (PhaseFieldBound::identify_active_set)
+   * before the rows of the set are replaced by the bound. Engaged from the
+   * start, the active set of the first, far-off iterates holds DoFs that
+   * the solution leaves free, and steps that never touch the bound took 5
+   * instead of 3 iterations (notched tension).
+   */
+  class CoupledProblem : public NonlinearProblem
+  {
+  public:
+    CoupledProblem(const Discretisation                &discretisation,
+                   const SystemAssembler               &assembler,
+                   const std::deque<BoundaryCondition> &boundary_conditions,
+                   const CouplingParameters            &coupling,
+                   const std::string                   &direct_solver,
+                   const double                         force_scale,
+                   dealii::ConditionalOStream          &verbose_out,
+                   dealii::TimerOutput                 &timer,
+                   ContactProblem                      *contact = nullptr);
+
+    /// Sparsity pattern and vectors; call after every DoF distribution.
+    void
+    setup();
+
+    /// Starts the load step @p step from @p u: the contact search on the
+    /// geometry of @p u (a new sparsity pattern when the candidate pairs
+    /// changed) and the multipliers reset to their committed values.
+    void
+    begin_step(const StepData &step, const Vector &u);
+
+    /// Blocks whose values are kept in the following solves.
+    void
+    freeze(const std::array<bool, Block::n_blocks> &frozen);
+
+    /// f_int at the last converged state (hanging-node constraints only).
+    const Vector &
+    internal_force() const
+    {
+      return force;
+    }
+
+    /// What the assembly found at the last converged state.
+    const AssemblyInfo &
+    converged_info() const
+    {
+      return accepted_info;
+    }
+
+    /// Whether the phase-field block has unknowns.
+    bool
+    has_phase_field() const;
+
+    // NonlinearProblem
+    std::vector<std::string>
+    block_names() const override;
+    bool
+    block_solved(const unsigned int b) const override;
+    unsigned int
+    n_nonempty_blocks() const override;
+    void
+    begin_solve() override;
+    bool
+    begin_iteration(const Vector &x) override;
+    ResidualEvaluation
+    assemble_system(const Vector &x) override;
+    ResidualEvaluation
+    assemble_residual(const Vector &x) override;
+    bool
+    converged(const Vector &x, const std::vector<double> &tolerances) override;
+    std::vector<double>
+    modify_linear_system(const Vector &x) override;
+    const Matrix &
+    system_matrix() const override
+    {
+      return tangent;
+    }
+    const Vector &
+    system_rhs() const override
+    {
+      return newton_rhs;
+    }
+    void
+    distribute(Vector &d) const override;
+    std::string
+    describe() const override;
+    void
+    compared_product(const Vector &d, Vector &k_d) const override;
+    void
+    compared_residual(const Vector &x, Vector &r) override;
+
+  private:
+    /// Bulk and contact terms at #u_ghosted into @p targets (contact under
+    /// the timer "contact: integration, tangent" or ", residual").
+    AssemblyInfo
+    assemble(const AssemblyTargets &targets);
+
+    /// Norms and scales of #residual at the state of @p info.
+    ResidualEvaluation
+    evaluation(const AssemblyInfo &info) const;
+
+    std::vector<double>
+    residual_norms() const;
+
+    /// The active set of the bound at @p x, refined on the s block, put
+    /// into the fresh tangent, right-hand side and residual.
+    void
+    apply_bound(const Vector &x);
+
+    const Discretisation                &discretisation;
+    const SystemAssembler               &assembler;
+    const std::deque<BoundaryCondition> &boundary_conditions;
+    const CouplingParameters            &coupling;
+    const std::string                    direct_solver;
+    const double                         force_scale;
+    dealii::ConditionalOStream          &verbose_out;
+    dealii::TimerOutput                 &timer;
+    ContactProblem                      *contact;
+
+    StepData                          step;
+    std::array<bool, Block::n_blocks> frozen{{false, false, false}};
+    dealii::AffineConstraints<double> constraints;
+
+    dealii::TrilinosWrappers::BlockSparseMatrix tangent;
+    Vector newton_rhs, residual, force, u_ghosted;
+
+    AssemblyInfo last_info, accepted_info;
+
+    /// The bound of the current solve (if it is bounded).
+    std::optional<PhaseFieldBound>  bound;
+    bool                            bound_engaged = false;
+    bool                            bound_applied = false;
+    dealii::types::global_dof_index n_on_bound    = 0;
+  };
+} // namespace DuctileContact

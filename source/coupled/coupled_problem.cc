@@ -1,0 +1,400 @@
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include <ductile_contact/contact/contact_problem.h>
+#include <ductile_contact/coupled/coupled_problem.h>
+#include <ductile_contact/discretisation/constraints.h>
+
+#include <cmath>
+#include <limits>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// Sweeps of PhaseFieldBound::identify_active_set() per Newton
+    /// iteration; the coupled iteration goes on from the last set if the
+    /// sweeps have not settled (a set that cycles).
+    constexpr unsigned int max_active_set_sweeps = 20;
+  } // namespace
+
+
+
+  CoupledProblem::CoupledProblem(
+    const Discretisation                &discretisation,
+    const SystemAssembler               &assembler,
+    const std::deque<BoundaryCondition> &boundary_conditions,
+    const CouplingParameters            &coupling,
+    const std::string                   &direct_solver,
+    const double                         force_scale,
+    ConditionalOStream                  &verbose_out,
+    TimerOutput                         &timer,
+    ContactProblem                      *contact)
+      : discretisation(discretisation)
+      , assembler(assembler)
+      , boundary_conditions(boundary_conditions)
+      , coupling(coupling)
+      , direct_solver(direct_solver)
+      , force_scale(force_scale)
+      , verbose_out(verbose_out)
+      , timer(timer)
+      , contact(contact)
+  {
+  }
+
+
+
+  void
+  CoupledProblem::setup()
+  {
+    TimerOutput::Scope scope(timer, "setup: sparsity");
+    const MPI_Comm     comm = discretisation.dof_handler.get_communicator();
+
+    // Same constrained DoF set as every Newton iteration (values differ).
+    AffineConstraints<double> pattern_constraints;
+    make_newton_constraints(
+      discretisation, boundary_conditions, 0., nullptr, pattern_constraints);
+
+    // Every field couples with every other within a cell (the coupled
+    // [u | alpha | s] tangent); empty blocks cost nothing. Contact writes
+    // rows of every surface DoF (master rows of other ranks).
+    std::vector<IndexSet> writable_rows = discretisation.relevant_partitioning;
+    if (contact)
+      {
+        const IndexSet surface = contact->surface_dofs();
+        writable_rows[Block::displacement].add_indices(
+          surface.get_view(0, discretisation.dofs_per_block[0]));
+      }
+    TrilinosWrappers::BlockSparsityPattern sp(discretisation.owned_partitioning,
+                                              discretisation.owned_partitioning,
+                                              writable_rows,
+                                              comm);
+    if (!has_phase_field())
+      DoFTools::make_sparsity_pattern(discretisation.dof_handler,
+                                      sp,
+                                      pattern_constraints,
+                                      false,
+                                      Utilities::MPI::this_mpi_process(comm));
+    else
+      {
+        // The C0IP terms couple s across interior faces, nothing else does.
+        Table<2, DoFTools::Coupling> cell_coupling(Component::n_components,
+                                                   Component::n_components);
+        Table<2, DoFTools::Coupling> face_coupling(Component::n_components,
+                                                   Component::n_components);
+        cell_coupling.fill(DoFTools::always);
+        face_coupling.fill(DoFTools::none);
+        face_coupling(Component::phase_field, Component::phase_field) =
+          DoFTools::always;
+        DoFTools::make_flux_sparsity_pattern(discretisation.dof_handler,
+                                             sp,
+                                             pattern_constraints,
+                                             false,
+                                             cell_coupling,
+                                             face_coupling,
+                                             Utilities::MPI::this_mpi_process(
+                                               comm));
+      }
+    // Constrained rows get a diagonal entry in distribute_local_to_global(),
+    // also from face terms assembled on a ghost neighbour's DoFs, whose
+    // diagonal the flux pattern of this rank does not hold.
+    for (const auto i : discretisation.locally_relevant_dofs)
+      sp.add(i, i);
+    if (contact)
+      contact->add_couplings(sp, pattern_constraints);
+    sp.compress();
+    tangent.reinit(sp);
+
+    for (auto *v : {&newton_rhs, &residual, &force})
+      v->reinit(discretisation.owned_partitioning, comm);
+    u_ghosted.reinit(discretisation.owned_partitioning,
+                     discretisation.relevant_partitioning,
+                     comm);
+  }
+
+
+
+  void
+  CoupledProblem::begin_step(const StepData &step_data, const Vector &u)
+  {
+    step = step_data;
+    if (!contact)
+      return;
+    u_ghosted = u;
+    bool new_couplings;
+    {
+      TimerOutput::Scope scope(timer, "contact: search");
+      new_couplings = contact->begin_step(u_ghosted);
+    }
+    if (new_couplings)
+      setup(); // the candidate pairs changed: new couplings
+  }
+
+
+
+  void
+  CoupledProblem::freeze(const std::array<bool, Block::n_blocks> &blocks)
+  {
+    frozen = blocks;
+  }
+
+
+
+  bool
+  CoupledProblem::has_phase_field() const
+  {
+    return discretisation.dofs_per_block[Block::phase_field] > 0;
+  }
+
+
+
+  std::vector<std::string>
+  CoupledProblem::block_names() const
+  {
+    return {"u", "alpha", "s"};
+  }
+
+
+
+  bool
+  CoupledProblem::block_solved(const unsigned int b) const
+  {
+    return !frozen[b] && discretisation.dofs_per_block[b] > 0;
+  }
+
+
+
+  unsigned int
+  CoupledProblem::n_nonempty_blocks() const
+  {
+    unsigned int n = 0;
+    for (unsigned int b = 0; b < Block::n_blocks; ++b)
+      n += discretisation.dofs_per_block[b] > 0 ? 1 : 0;
+    return n;
+  }
+
+
+
+  void
+  CoupledProblem::begin_solve()
+  {
+    // Irreversibility as a bound s >= s_n on the phase-field DoFs, not in a
+    // sub-solve that freezes s.
+    bound.reset();
+    if (coupling.phase_field_bound() && has_phase_field() &&
+        !frozen[Block::phase_field] && step.old_solution != nullptr)
+      bound.emplace(discretisation);
+    bound_engaged = false;
+    bound_applied = false;
+    n_on_bound    = 0;
+  }
+
+
+
+  bool
+  CoupledProblem::begin_iteration(const Vector &x)
+  {
+    u_ghosted = x;
+    make_newton_constraints(discretisation,
+                            boundary_conditions,
+                            step.t,
+                            &u_ghosted,
+                            constraints,
+                            frozen);
+    double largest = 0;
+    for (const auto &line : constraints.get_lines())
+      largest = std::max(largest, std::abs(line.inhomogeneity));
+    return Utilities::MPI::max(largest,
+                               discretisation.dof_handler.get_communicator()) >
+           0.;
+  }
+
+
+
+  AssemblyInfo
+  CoupledProblem::assemble(const AssemblyTargets &targets)
+  {
+    const AssemblyInfo info =
+      assembler.assemble(u_ghosted, step, constraints, targets);
+    if (contact)
+      {
+        TimerOutput::Scope scope(timer,
+                                 targets.tangent
+                                   ? "contact: integration, tangent"
+                                   : "contact: integration, residual");
+        contact->assemble(u_ghosted, constraints, targets);
+      }
+    return info;
+  }
+
+
+
+  std::vector<double>
+  CoupledProblem::residual_norms() const
+  {
+    std::vector<double> n(Block::n_blocks);
+    for (unsigned int b = 0; b < Block::n_blocks; ++b)
+      n[b] = residual.block(b).l2_norm();
+    return n;
+  }
+
+
+
+  ResidualEvaluation
+  CoupledProblem::evaluation(const AssemblyInfo &info) const
+  {
+    ResidualEvaluation e;
+    e.norms          = residual_norms();
+    e.relative_scale = {force.block(Block::displacement).l2_norm(),
+                        info.residual_scale[Block::hardening],
+                        info.residual_scale[Block::phase_field]};
+    e.absolute_scale = {force_scale, 0., 0.};
+    for (unsigned int b = 0; b < Block::n_blocks; ++b)
+      e.round_off.push_back(frozen[b] ? 0.
+                                      : std::numeric_limits<double>::epsilon() *
+                                          info.residual_magnitude[b]);
+    e.admissible     = !info.inverted;
+    e.inadmissible   = "inverts an element";
+    e.branch_changes = info.switch_flips;
+    return e;
+  }
+
+
+
+  void
+  CoupledProblem::apply_bound(const Vector &x)
+  {
+    bound->record_diagonal(tangent);
+    const types::global_dof_index n_first =
+      bound->update_active_set(x, *step.old_solution, residual, constraints);
+    const unsigned int sweeps =
+      bound->identify_active_set(tangent,
+                                 newton_rhs,
+                                 x,
+                                 *step.old_solution,
+                                 constraints,
+                                 direct_solver,
+                                 max_active_set_sweeps);
+    n_on_bound = bound->active_size();
+    verbose_out << "        active set on the s block: " << n_first << " -> "
+                << n_on_bound << " DoFs in " << sweeps << " sweeps"
+                << std::endl;
+    bound->constrain(tangent, newton_rhs, x, *step.old_solution);
+    bound->to_complementarity(residual, x, *step.old_solution, constraints);
+    bound_applied = true;
+  }
+
+
+
+  ResidualEvaluation
+  CoupledProblem::assemble_system(const Vector &x)
+  {
+    AssemblyTargets targets{&tangent, &newton_rhs, &residual, &force};
+    targets.switches = AssemblyTargets::Switches::record;
+    last_info        = assemble(targets);
+    bound_applied    = false;
+    if (bound_engaged)
+      apply_bound(x);
+    return evaluation(last_info);
+  }
+
+
+
+  ResidualEvaluation
+  CoupledProblem::assemble_residual(const Vector &x)
+  {
+    // The switches of the iterate: R is smooth along the line (a plastic
+    // point switching within it would make R jump by its whole flow; a
+    // point whose psi^+ passes its history maximum would add a slope the
+    // tangent does not have).
+    u_ghosted = x;
+    AssemblyTargets targets{nullptr, nullptr, &residual, &force};
+    targets.switches = AssemblyTargets::Switches::frozen;
+    last_info        = assemble(targets);
+    if (bound_engaged)
+      bound->to_complementarity(residual, x, *step.old_solution, constraints);
+    return evaluation(last_info);
+  }
+
+
+
+  bool
+  CoupledProblem::converged(const Vector              &x,
+                            const std::vector<double> &tolerances)
+  {
+    if (bound && !bound_engaged)
+      {
+        // The tangent in memory is the current iterate's (the trial's too:
+        // the line search assembles residuals only).
+        bound->record_diagonal(tangent);
+        Vector c = residual;
+        bound->to_complementarity(c, x, *step.old_solution, constraints);
+        if (c.block(Block::phase_field).l2_norm() >
+            tolerances[Block::phase_field])
+          {
+            bound_engaged = true;
+            verbose_out << "        s falls below its last accepted "
+                           "value: the bound s >= s_n is engaged"
+                        << std::endl;
+            return false;
+          }
+      }
+    accepted_info = last_info;
+    return true;
+  }
+
+
+
+  std::vector<double>
+  CoupledProblem::modify_linear_system(const Vector &x)
+  {
+    if (bound_engaged && !bound_applied) // engaged by converged()
+      apply_bound(x);
+    return residual_norms();
+  }
+
+
+
+  void
+  CoupledProblem::distribute(Vector &d) const
+  {
+    constraints.distribute(d);
+  }
+
+
+
+  std::string
+  CoupledProblem::describe() const
+  {
+    return bound_engaged
+             ? "s held on its bound at " + std::to_string(n_on_bound) + " DoFs"
+             : std::string();
+  }
+
+
+
+  void
+  CoupledProblem::compared_product(const Vector &d, Vector &k_d) const
+  {
+    tangent.vmult(k_d, d);
+    constraints.set_zero(k_d);
+    if (bound_applied)
+      bound->remove_active_rows(k_d);
+  }
+
+
+
+  void
+  CoupledProblem::compared_residual(const Vector &x, Vector &r)
+  {
+    u_ghosted = x;
+    AssemblyTargets targets{nullptr, nullptr, &residual, nullptr};
+    targets.switches = AssemblyTargets::Switches::frozen;
+    assemble(targets);
+    if (bound_applied)
+      bound->remove_active_rows(residual);
+    r = residual;
+  }
+} // namespace DuctileContact

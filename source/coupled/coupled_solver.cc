@@ -1,0 +1,194 @@
+#include <ductile_contact/contact/contact_problem.h>
+#include <ductile_contact/coupled/coupled_solver.h>
+#include <ductile_contact/solver/anderson_acceleration.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// @p r as the report of a step (one monolithic solve).
+    StepReport
+    as_step_report(const NewtonReport &r)
+    {
+      StepReport report;
+      static_cast<NewtonReport &>(report) = r;
+      return report;
+    }
+  } // namespace
+
+
+
+  CoupledSolver::CoupledSolver(const CouplingParameters &coupling,
+                               CoupledProblem           &problem,
+                               NewtonSolver             &newton,
+                               ConditionalOStream       &verbose_out,
+                               ContactProblem           *contact)
+      : coupling(coupling)
+      , problem(problem)
+      , newton(newton)
+      , verbose_out(verbose_out)
+      , contact(contact)
+  {
+  }
+
+
+
+  NewtonReport
+  CoupledSolver::newton_solve(TrilinosWrappers::MPI::BlockVector      &u,
+                              const std::array<bool, Block::n_blocks> &frozen)
+  {
+    problem.freeze(frozen);
+    return newton.solve(problem, u);
+  }
+
+
+
+  StepReport
+  CoupledSolver::solve_step(const StepData                     &step,
+                            TrilinosWrappers::MPI::BlockVector &u)
+  {
+    problem.begin_step(step, u);
+    if (!contact)
+      return solve_fields(u);
+
+    StepReport         total;
+    const unsigned int max_augmentations =
+      std::max_element(contact->pairs.begin(),
+                       contact->pairs.end(),
+                       [](const auto &a, const auto &b) {
+                         return a.max_augmentations < b.max_augmentations;
+                       })
+        ->max_augmentations;
+    for (unsigned int k = 0;; ++k)
+      {
+        const StepReport r = solve_fields(u);
+        total.iterations += r.iterations;
+        total.linear_iterations += r.linear_iterations;
+        total.staggered_iterations = r.staggered_iterations;
+        total.residual_norms       = r.residual_norms;
+        total.convergence_rate     = r.convergence_rate;
+        if (std::isfinite(r.tangent_error))
+          total.tangent_error = r.tangent_error;
+        total.info          = r.info;
+        total.augmentations = k;
+        if (!r.converged)
+          {
+            total.failure = r.failure;
+            return total;
+          }
+        if (contact->augment())
+          {
+            total.converged = true;
+            return total;
+          }
+        if (k + 1 == max_augmentations)
+          {
+            total.failure = "contact penetration above the tolerance after " +
+                            std::to_string(k + 1) + " multiplier updates";
+            return total;
+          }
+        verbose_out << "      contact multipliers updated (" << k + 1
+                    << "); largest penetration before the update:";
+        for (const ContactPairSummary &summary : contact->summary())
+          verbose_out << " " << summary.max_penetration << " m";
+        verbose_out << std::endl;
+      }
+  }
+
+
+
+  StepReport
+  CoupledSolver::solve_fields(TrilinosWrappers::MPI::BlockVector &u)
+  {
+    const std::array<bool, Block::n_blocks> none{{false, false, false}};
+    if (coupling.strategy == "monolithic" || !problem.has_phase_field())
+      {
+        StepReport report = as_step_report(newton_solve(u, none));
+        report.info       = problem.converged_info();
+        return report;
+      }
+
+    StepReport total;
+    if (coupling.strategy == "monolithic-staggered")
+      {
+        const TrilinosWrappers::MPI::BlockVector start = u;
+        const NewtonReport                       r     = newton_solve(u, none);
+        if (r.converged)
+          {
+            StepReport report           = as_step_report(r);
+            report.staggered_iterations = 0; // Newton alone solved the step
+            report.info                 = problem.converged_info();
+            return report;
+          }
+        verbose_out << "      monolithic Newton failed (" << r.failure
+                    << "); redoing the step staggered" << std::endl;
+        u                       = start;
+        total.iterations        = r.iterations;
+        total.linear_iterations = r.linear_iterations;
+      }
+    staggered(u, total);
+    if (total.converged)
+      total.info = problem.converged_info();
+    return total;
+  }
+
+
+
+  void
+  CoupledSolver::staggered(TrilinosWrappers::MPI::BlockVector &u,
+                           StepReport                         &total)
+  {
+    // Alternate minimisation: (u, alpha) with s fixed, then s with (u,
+    // alpha) fixed. Each sub-solve checks its fields before iterating, so
+    // a sub-solve that needs no iteration shows that the state it starts
+    // from meets the tolerances in every block: the coupled step is done.
+    // With acceleration, the phase field that the next mechanics sub-solve
+    // starts from is the Anderson combination of the last phase fields, no
+    // longer the one just solved for: then only a phase-field sub-solve
+    // that needs no iteration ends the step.
+    AndersonAcceleration          accelerate(coupling.acceleration_depth);
+    TrilinosWrappers::MPI::Vector s_iterate;
+    for (unsigned int k = 1; k <= coupling.max_staggered_iterations; ++k)
+      {
+        total.staggered_iterations = k;
+        const bool s_accelerated   = k > 2 && coupling.acceleration_depth > 0;
+        s_iterate                  = u.block(Block::phase_field);
+        for (const bool mechanics : {true, false})
+          {
+            const NewtonReport r =
+              newton_solve(u,
+                           mechanics
+                             ? std::array<bool, 3>{{false, false, true}}
+                             : std::array<bool, 3>{{true, true, false}});
+            total.iterations += r.iterations;
+            total.linear_iterations += r.linear_iterations;
+            if (std::isfinite(r.tangent_error))
+              total.tangent_error = r.tangent_error;
+            if (!r.converged)
+              {
+                total.failure = (mechanics ? "mechanics sub-step: "
+                                           : "phase-field sub-step: ") +
+                                r.failure;
+                return;
+              }
+            total.convergence_rate = r.convergence_rate;
+            if (r.iterations == 0 && (!mechanics || (k > 1 && !s_accelerated)))
+              {
+                total.converged = true;
+                return;
+              }
+          }
+        accelerate.update(s_iterate, u.block(Block::phase_field));
+        verbose_out << "      staggered iteration " << k << " done"
+                    << std::endl;
+      }
+    total.failure = "no staggered convergence in " +
+                    std::to_string(coupling.max_staggered_iterations) +
+                    " alternations";
+  }
+} // namespace DuctileContact
