@@ -5,9 +5,11 @@
 
 #include <ductile_contact/app/application.h>
 #include <ductile_contact/app/simulation.h>
+#include <ductile_contact/app/step_controller.h>
 #include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/coupled/coupled_problem.h>
 #include <ductile_contact/coupled/coupled_solver.h>
+#include <ductile_contact/output/progress_line.h>
 #include <ductile_contact/output/solution_writer.h>
 #include <ductile_contact/solver/linear_solver.h>
 #include <ductile_contact/solver/newton_solver.h>
@@ -123,7 +125,7 @@ namespace DuctileContact
                                               *discretisation,
                                               bodies);
 
-    for (auto *v : {&u, &internal_force, &previous_internal_force})
+    for (auto *v : {&u, &internal_force})
       v->reinit(discretisation->owned_partitioning, comm);
     for (auto *v : {&u_ghosted, &old_solution})
       v->reinit(discretisation->owned_partitioning,
@@ -235,15 +237,8 @@ namespace DuctileContact
 
 
   void
-  Simulation::record_step(const unsigned int step,
-                          const double       t,
-                          const double       dt,
-                          const StepReport  &report,
-                          const unsigned int cutbacks)
+  Simulation::add_boundary_columns(const double t)
   {
-    statistics.add("step", step);
-    statistics.add("time", t);
-    statistics.add("dt", dt);
     const auto  integrals = boundary_integrals(u_ghosted, t);
     const char *xyz[]     = {"x", "y", "z"};
     for (unsigned int b = 0; b < parameters.boundary_conditions.size(); ++b)
@@ -270,24 +265,20 @@ namespace DuctileContact
                              : integrals[b].traction_force[d]);
           }
       }
-    const double stored_energy = committed.stored_energy;
-    const auto   probe_values  = probes->evaluate(u_ghosted);
+    const auto probe_values = probes->evaluate(u_ghosted);
     for (unsigned int k = 0; k < probe_values.size(); ++k)
       for (unsigned int d = 0; d < dim; ++d)
         statistics.add("probe" + std::to_string(k + 1) + "_u_" + xyz[d],
                        probe_values[k][d]);
-    statistics.add("stored_energy", stored_energy);
-    statistics.add("external_work", external_work);
-    bool plastic = false, cracking = false;
-    for (const BodyParameters &b : parameters.bodies)
+  }
+
+
+
+  void
+  Simulation::add_field_columns()
+  {
+    if (has_block(Block::hardening))
       {
-        plastic |= b.plasticity;
-        cracking |= b.fracture;
-      }
-    if (plastic)
-      {
-        statistics.add("plastic_work", plastic_work);
-        statistics.add("hardening_energy", committed.hardening_energy);
         statistics.add("max_alpha", committed.max_alpha);
         const double min_increment = committed.min_yielding_alpha_increment;
         statistics.add("min_alpha_change_yielding",
@@ -295,48 +286,49 @@ namespace DuctileContact
                          ? min_increment
                          : 0.);
       }
-    if (cracking)
+    if (has_block(Block::phase_field))
       {
-        statistics.add("fracture_energy", committed.fracture_energy);
-        statistics.add("fracture_viscous_work", fracture_viscous_work);
-        statistics.add("history_driving_work", history_driving_work);
         statistics.add("max_s", max_phase_field);
         statistics.add("min_s_change", min_phase_field_change);
       }
-    double contact_dissipation = 0.;
-    if (contact)
-      for (const ContactPairSummary &c : contact->summary())
-        contact_dissipation += c.dissipation;
-    statistics.add("energy_residual",
-                   external_work - stored_energy - plastic_work -
-                     committed.fracture_energy - fracture_viscous_work -
-                     contact_dissipation);
-    if (contact)
+  }
+
+
+
+  void
+  Simulation::add_contact_columns(const StepReport &report)
+  {
+    const char *xyz[] = {"x", "y", "z"};
+    const auto &pairs = parameters.contact_pairs;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
       {
-        const auto &pairs = parameters.contact_pairs;
-        for (unsigned int p = 0; p < pairs.size(); ++p)
-          {
-            const ContactPairSummary &c = contact->summary()[p];
-            const std::string         name =
-              "contact" + std::to_string(pairs[p].number);
-            for (unsigned int d = 0; d < dim; ++d)
-              statistics.add(name + "_force_" + xyz[d], c.force[d]);
-            statistics.add(name + "_area", c.area);
-            statistics.add(name + "_active_nodes", c.active_nodes);
-            statistics.add(name + "_max_penetration", c.max_penetration);
-            statistics.add(name + "_max_pressure", c.max_pressure);
-            statistics.add(name + "_min_pressure", c.min_pressure);
-            for (unsigned int d = 0; d < dim; ++d)
-              statistics.add(name + "_friction_" + xyz[d], c.friction_force[d]);
-            statistics.add(name + "_sticking_nodes", c.sticking_nodes);
-            statistics.add(name + "_slipping_nodes", c.slipping_nodes);
-            statistics.add(name + "_max_slip", c.max_slip);
-            statistics.add(name + "_dissipation", c.dissipation);
-          }
-        statistics.add("contact_augmentations", report.augmentations);
+        const ContactPairSummary &c = contact->summary()[p];
+        const std::string name = "contact" + std::to_string(pairs[p].number);
+        for (unsigned int d = 0; d < dim; ++d)
+          statistics.add(name + "_force_" + xyz[d], c.force[d]);
+        statistics.add(name + "_area", c.area);
+        statistics.add(name + "_active_nodes", c.active_nodes);
+        statistics.add(name + "_max_penetration", c.max_penetration);
+        statistics.add(name + "_max_pressure", c.max_pressure);
+        statistics.add(name + "_min_pressure", c.min_pressure);
+        for (unsigned int d = 0; d < dim; ++d)
+          statistics.add(name + "_friction_" + xyz[d], c.friction_force[d]);
+        statistics.add(name + "_sticking_nodes", c.sticking_nodes);
+        statistics.add(name + "_slipping_nodes", c.slipping_nodes);
+        statistics.add(name + "_max_slip", c.max_slip);
+        statistics.add(name + "_dissipation", c.dissipation);
       }
+    statistics.add("contact_augmentations", report.augmentations);
+  }
+
+
+
+  void
+  Simulation::add_solver_columns(const StepReport  &report,
+                                 const unsigned int cutbacks)
+  {
     statistics.add("newton_iterations", report.iterations);
-    if (cracking)
+    if (has_block(Block::phase_field))
       statistics.add("staggered_iterations", report.staggered_iterations);
     statistics.add("newton_rate", report.convergence_rate);
     if (parameters.newton.check_tangent)
@@ -353,6 +345,34 @@ namespace DuctileContact
                    seconds("assembly") + seconds("assembly (line search)"));
     statistics.add("solve_time", seconds("linear solve"));
     statistics.add("wall_time", MPI_Wtime() - wall_start);
+  }
+
+
+
+  void
+  Simulation::record_step(const unsigned int step,
+                          const double       t,
+                          const double       dt,
+                          const StepReport  &report,
+                          const unsigned int cutbacks)
+  {
+    statistics.add("step", step);
+    statistics.add("time", t);
+    statistics.add("dt", dt);
+    add_boundary_columns(t);
+    double contact_dissipation = 0.;
+    if (contact)
+      for (const ContactPairSummary &c : contact->summary())
+        contact_dissipation += c.dissipation;
+    energy.add_columns(statistics,
+                       committed,
+                       has_block(Block::hardening),
+                       has_block(Block::phase_field),
+                       contact_dissipation);
+    add_field_columns();
+    if (contact)
+      add_contact_columns(report);
+    add_solver_columns(report, cutbacks);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       statistics.write();
   }
@@ -365,13 +385,53 @@ namespace DuctileContact
     TimerOutput::Scope scope(timer, "commit history");
     QuadratureHistory  updated = history;
     u_ghosted                  = u;
-    const AssemblyInfo info    = assembler->assemble(
-      u_ghosted,
-      step_data,
-      discretisation->hanging_node_constraints,
-      {nullptr, nullptr, nullptr, nullptr, &updated, &cell_quantities});
+    const AssemblyInfo info = assembler->commit(u_ghosted, step_data, updated);
+    assembler->cell_averages(u_ghosted, step_data, cell_quantities);
     history = std::move(updated);
     return info;
+  }
+
+
+
+  bool
+  Simulation::has_block(const unsigned int b) const
+  {
+    return discretisation->dofs_per_block[b] > 0;
+  }
+
+
+
+  void
+  Simulation::write_output(const unsigned int step, const double t)
+  {
+    TimerOutput::Scope scope(timer, "output");
+    writer->write(step, t, u_ghosted, cell_quantities);
+    if (contact)
+      contact->write_output(parameters.output.directory, step, t);
+  }
+
+
+
+  void
+  Simulation::accept_step(const StepData                           &step_data,
+                          const TrilinosWrappers::MPI::BlockVector &u_old)
+  {
+    internal_force                               = problem->internal_force();
+    TrilinosWrappers::MPI::BlockVector increment = u;
+    increment -= u_old;
+    committed = commit(step_data);
+    if (contact)
+      contact->commit();
+    energy.add_step(internal_force, increment, committed);
+    if (has_block(Block::phase_field))
+      {
+        TrilinosWrappers::MPI::Vector ds = u.block(Block::phase_field);
+        ds -= u_old.block(Block::phase_field);
+        min_phase_field_change = ds.min();
+        max_phase_field        = u.block(Block::phase_field).max();
+      }
+    old_solution = u;
+    u_ghosted    = u;
   }
 
 
@@ -387,34 +447,27 @@ namespace DuctileContact
     const double eps = 1e-12 * T;
     const auto   n_steps =
       static_cast<unsigned int>(std::ceil(T / ls.time_step - 1e-9));
-    double       t        = 0;
-    double       dt       = ls.time_step;
-    unsigned int step     = 0;
-    unsigned int interval = parameters.output.interval;
+    const unsigned int interval = parameters.output.interval;
+    const ProgressLine progress(pcout, T, n_steps);
+    StepController     controller(ls);
+    double             t    = 0;
+    unsigned int       step = 0;
 
     u            = 0;
     old_solution = u;
     committed    = commit({0., ls.time_step, &old_solution, &history});
     record_step(0, 0., 0., StepReport(), 0);
     if (interval > 0)
-      {
-        writer->write(0, 0., u_ghosted, cell_quantities);
-        if (contact)
-          contact->write_output(parameters.output.directory, 0, 0.);
-      }
+      write_output(0, 0.);
 
     // The last accepted increment and its step size, for the linear
     // predictor.
     TrilinosWrappers::MPI::BlockVector last_increment = u;
     double                             last_dt        = 0.;
-
-    unsigned int cutbacks             = 0;
-    unsigned int same_increment_steps = 0;
-    double       last_accepted_dt     = 0.;
     while (t < T - eps)
       {
-        const double                             dt_try = std::min(dt, T - t);
-        const TrilinosWrappers::MPI::BlockVector u_old  = u;
+        const double dt_try = controller.next_increment(t);
+        const TrilinosWrappers::MPI::BlockVector u_old = u;
         if (ls.predictor == "linear" && last_dt > 0.)
           u.add(dt_try / last_dt, last_increment);
         const StepData   step_data{t + dt_try, dt_try, &old_solution, &history};
@@ -422,13 +475,13 @@ namespace DuctileContact
 
         if (!report.converged)
           {
-            u  = u_old;
-            dt = 0.5 * dt_try;
-            ++cutbacks;
+            u                = u_old;
+            const bool go_on = controller.reject(dt_try);
             pcout << "  step at t = " << t + dt_try << " failed ("
-                  << report.failure << "); cutting back to dt = " << dt
+                  << report.failure
+                  << "); cutting back to dt = " << controller.increment()
                   << std::endl;
-            if (dt < ls.minimum_time_step)
+            if (!go_on)
               {
                 pcout << "Error: the load step would have to be smaller than "
                          "'Load stepping/Minimum time step' = "
@@ -440,81 +493,33 @@ namespace DuctileContact
             continue;
           }
 
-        // Accepted step.
-        internal_force = problem->internal_force();
         t += dt_try;
         ++step;
         last_increment = u;
         last_increment -= u_old;
         last_dt = dt_try;
-        external_work += 0.5 * (internal_force * last_increment +
-                                previous_internal_force * last_increment);
-        previous_internal_force = internal_force;
-        committed               = commit(step_data);
-        if (contact)
-          contact->commit();
-        plastic_work += committed.plastic_work_increment;
-        fracture_viscous_work += committed.fracture_viscous_work_increment;
-        history_driving_work += committed.history_work_increment;
-        if (discretisation->dofs_per_block[Block::phase_field] > 0)
-          {
-            TrilinosWrappers::MPI::Vector ds = u.block(Block::phase_field);
-            ds -= u_old.block(Block::phase_field);
-            min_phase_field_change = ds.min();
-            max_phase_field        = u.block(Block::phase_field).max();
-          }
-        old_solution = u;
-        u_ghosted    = u;
-        record_step(step, t, dt_try, report, cutbacks);
-        const bool last = (t >= T - eps);
-        if (interval > 0 && (step % interval == 0 || last))
-          {
-            TimerOutput::Scope scope(timer, "output");
-            writer->write(step, t, u_ghosted, cell_quantities);
-            if (contact)
-              contact->write_output(parameters.output.directory, step, t);
-          }
+        accept_step(step_data, u_old);
+        record_step(step, t, dt_try, report, controller.cutbacks());
+        if (interval > 0 && (step % interval == 0 || t >= T - eps))
+          write_output(step, t);
 
-        const double elapsed = MPI_Wtime() - wall_start;
-        pcout << "step " << std::setw(4) << step << " (~" << step << "/"
-              << std::max(n_steps, step) << ")  t = " << std::setw(10)
-              << std::left << t << std::right << " Newton " << std::setw(2)
-              << report.iterations << " (linear " << report.linear_iterations
-              << ")";
-        if (std::isfinite(report.convergence_rate))
-          pcout << " rate " << std::fixed << std::setprecision(2)
-                << report.convergence_rate << std::defaultfloat
-                << std::setprecision(6);
-        if (discretisation->dofs_per_block[Block::phase_field] > 0)
-          pcout << (parameters.coupling.strategy != "monolithic" &&
-                        report.staggered_iterations > 0
-                      ? "  alternations " +
-                          std::to_string(report.staggered_iterations)
-                      : std::string())
-                << "  max s " << std::setprecision(3) << max_phase_field
-                << std::setprecision(6);
-        pcout << "  min J " << std::setprecision(4) << report.info.min_J
-              << std::setprecision(6) << "  " << std::fixed
-              << std::setprecision(1) << elapsed << " s, ~"
-              << elapsed / t * (T - t) << " s left" << std::defaultfloat
-              << std::setprecision(6) << std::endl;
-
-        // A run of accepted steps at one increment; a cut-back or a change
-        // of the increment starts a new run.
-        same_increment_steps = (cutbacks == 0 && dt_try == last_accepted_dt)
-                                 ? same_increment_steps + 1
-                                 : 1;
-        last_accepted_dt     = dt_try;
-        cutbacks             = 0;
-        if (report.iterations <= ls.easy_newton_steps ||
-            (ls.steps_before_growth > 0 &&
-             same_increment_steps >= ls.steps_before_growth))
+        StepProgress p;
+        p.step              = step;
+        p.t                 = t;
+        p.newton_iterations = report.iterations;
+        p.linear_iterations = report.linear_iterations;
+        p.rate              = report.convergence_rate;
+        if (has_block(Block::phase_field))
           {
-            dt = std::min(dt_try * ls.growth_factor, ls.time_step);
-            same_increment_steps = 0;
+            p.max_s        = max_phase_field;
+            p.alternations = parameters.coupling.strategy != "monolithic"
+                               ? report.staggered_iterations
+                               : 0;
           }
-        else
-          dt = dt_try;
+        p.min_J   = report.info.min_J;
+        p.elapsed = MPI_Wtime() - wall_start;
+        progress.print(p);
+        controller.accept(dt_try, report.iterations);
       }
     return 0;
   }

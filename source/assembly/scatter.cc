@@ -9,7 +9,7 @@ namespace DuctileContact
 
   void
   scatter(const FullMatrix<double>                   &matrix,
-          Vector<double>                             &rhs,
+          const Vector<double>                       &rhs,
           const Vector<double>                       &f_int,
           const std::vector<types::global_dof_index> &indices,
           const AffineConstraints<double>            &constraints,
@@ -23,8 +23,9 @@ namespace DuctileContact
       constraints.distribute_local_to_global(rhs, indices, *targets.newton_rhs);
     if (targets.residual)
       {
-        rhs *= -1.;
-        constraints.distribute_local_to_global(rhs, indices, *targets.residual);
+        dealii::Vector<double> r = rhs;
+        r *= -1.;
+        constraints.distribute_local_to_global(r, indices, *targets.residual);
       }
     // Condensed with the hanging-node constraints only: then the sum of
     // f_int over the DoFs of a boundary is the force through it even

@@ -292,9 +292,10 @@ namespace DuctileContact
   CoupledProblem::assemble_system(const Vector &x)
   {
     AssemblyTargets targets{&tangent, &newton_rhs, &residual, &force};
-    targets.switches = AssemblyTargets::Switches::record;
-    last_info        = assemble(targets);
-    bound_applied    = false;
+    targets.branch_record = &branches;
+    targets.branches      = Branches::record;
+    last_info             = assemble(targets);
+    bound_applied         = false;
     if (bound_engaged)
       apply_bound(x);
     return evaluation(last_info);
@@ -311,8 +312,9 @@ namespace DuctileContact
     // tangent does not have).
     u_ghosted = x;
     AssemblyTargets targets{nullptr, nullptr, &residual, &force};
-    targets.switches = AssemblyTargets::Switches::frozen;
-    last_info        = assemble(targets);
+    targets.branch_record = &branches;
+    targets.branches      = Branches::frozen;
+    last_info             = assemble(targets);
     if (bound_engaged)
       bound->to_complementarity(residual, x, *step.old_solution, constraints);
     return evaluation(last_info);
@@ -391,7 +393,8 @@ namespace DuctileContact
   {
     u_ghosted = x;
     AssemblyTargets targets{nullptr, nullptr, &residual, nullptr};
-    targets.switches = AssemblyTargets::Switches::frozen;
+    targets.branch_record = &branches;
+    targets.branches      = Branches::frozen;
     assemble(targets);
     if (bound_applied)
       bound->remove_active_rows(residual);

@@ -23,8 +23,8 @@ namespace DuctileContact
     // Four elements, indexed by fe_index(): (alpha?, s?) in {0,1}^2.
     for (unsigned int index = 0; index < 4; ++index)
       {
-        const bool with_alpha = index & 1;
-        const bool with_s     = index & 2;
+        const bool with_alpha = fields(index).hardening;
+        const bool with_s     = fields(index).phase_field;
         const auto scalar =
           [&](const bool present) -> std::unique_ptr<FiniteElement<dim>> {
           if (present)
@@ -35,6 +35,23 @@ namespace DuctileContact
           FE_Q<dim>(degree), dim, *scalar(with_alpha), 1, *scalar(with_s), 1));
         quadrature.push_back(QGauss<dim>(degree + 1));
         face_quadrature.push_back(QGauss<dim - 1>(degree + 1));
+
+        LocalDofs                 dofs;
+        const FiniteElement<dim> &fe = fe_collection[index];
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            if (c < dim)
+              {
+                dofs.u.push_back(i);
+                dofs.u_component.push_back(c);
+              }
+            else if (c == Component::hardening)
+              dofs.alpha.push_back(i);
+            else
+              dofs.s.push_back(i);
+          }
+        dofs_by_field.push_back(dofs);
       }
     // Curved geometry (a manifold other than flat, e.g. the round bar's
     // hull) is represented to the order of the elements; straight-sided
@@ -51,6 +68,14 @@ namespace DuctileContact
   Discretisation::fe_index(const BodyFields &fields)
   {
     return (fields.hardening ? 1 : 0) + (fields.phase_field ? 2 : 0);
+  }
+
+
+
+  BodyFields
+  Discretisation::fields(const unsigned int fe_index)
+  {
+    return BodyFields{(fe_index & 1) != 0, (fe_index & 2) != 0};
   }
 
 

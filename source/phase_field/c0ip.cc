@@ -103,63 +103,73 @@ namespace DuctileContact
                       &work,
     const unsigned int active_fe_index)
   {
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          cell->active_fe_index() == active_fe_index)
+        for_each_owned_interior_face(cell, fiv, work);
+  }
+
+
+
+  void
+  for_each_owned_interior_face(
+    const DoFHandler<dim>::active_cell_iterator &cell,
+    FEInterfaceValues<dim>                      &fiv,
+    const std::function<void(const FEInterfaceValues<dim> &, const double)>
+      &work)
+  {
     const auto extent = [](const auto &cell, const unsigned int f) {
       return cell->extent_in_direction(
         GeometryInfo<dim>::unit_normal_direction[f]);
     };
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          cell->active_fe_index() == active_fe_index)
-        for (const unsigned int f : cell->face_indices())
+    const unsigned int active_fe_index = cell->active_fe_index();
+    for (const unsigned int f : cell->face_indices())
+      {
+        // Periodic faces are interior faces of the periodic domain.
+        const bool periodic = cell->has_periodic_neighbor(f);
+        if (cell->at_boundary(f) && !periodic)
+          continue;
+        const auto neighbor =
+          periodic ? cell->periodic_neighbor(f) : cell->neighbor(f);
+        const unsigned int neighbor_face =
+          periodic ? cell->periodic_neighbor_face_no(f)
+                   : cell->neighbor_face_no(f);
+        if (neighbor->has_children())
+          continue; // visited from the finer side
+        if (neighbor->active_fe_index() != active_fe_index)
+          continue;
+        const double h_inverse =
+          0.5 * (1. / extent(cell, f) + 1. / extent(neighbor, neighbor_face));
+        const bool coarser = periodic ? cell->periodic_neighbor_is_coarser(f)
+                                      : cell->neighbor_is_coarser(f);
+        if (coarser)
           {
-            // Periodic faces are interior faces of the periodic domain.
-            const bool periodic = cell->has_periodic_neighbor(f);
-            if (cell->at_boundary(f) && !periodic)
-              continue;
-            const auto neighbor =
-              periodic ? cell->periodic_neighbor(f) : cell->neighbor(f);
-            const unsigned int neighbor_face =
-              periodic ? cell->periodic_neighbor_face_no(f)
-                       : cell->neighbor_face_no(f);
-            if (neighbor->has_children())
-              continue; // visited from the finer side
-            if (neighbor->active_fe_index() != active_fe_index)
-              continue;
-            const double h_inverse =
-              0.5 *
-              (1. / extent(cell, f) + 1. / extent(neighbor, neighbor_face));
-            const bool coarser = periodic
-                                   ? cell->periodic_neighbor_is_coarser(f)
-                                   : cell->neighbor_is_coarser(f);
-            if (coarser)
-              {
-                const auto [nf, nsf] =
-                  periodic
-                    ? cell->periodic_neighbor_of_coarser_periodic_neighbor(f)
-                    : cell->neighbor_of_coarser_neighbor(f);
-                fiv.reinit(
-                  cell, f, numbers::invalid_unsigned_int, neighbor, nf, nsf);
-              }
-            else
-              {
-                // (A cell can be its own periodic neighbour: then the face
-                // with the smaller number takes the pair.)
-                const bool mine =
-                  neighbor == cell
-                    ? f < neighbor_face
-                    : (neighbor->is_locally_owned()
-                         ? cell->id() < neighbor->id()
-                         : cell->subdomain_id() < neighbor->subdomain_id());
-                if (!mine)
-                  continue;
-                fiv.reinit(cell,
-                           f,
-                           numbers::invalid_unsigned_int,
-                           neighbor,
-                           neighbor_face,
-                           numbers::invalid_unsigned_int);
-              }
-            work(fiv, h_inverse);
+            const auto [nf, nsf] =
+              periodic ? cell->periodic_neighbor_of_coarser_periodic_neighbor(f)
+                       : cell->neighbor_of_coarser_neighbor(f);
+            fiv.reinit(
+              cell, f, numbers::invalid_unsigned_int, neighbor, nf, nsf);
           }
+        else
+          {
+            // (A cell can be its own periodic neighbour: then the face
+            // with the smaller number takes the pair.)
+            const bool mine =
+              neighbor == cell
+                ? f < neighbor_face
+                : (neighbor->is_locally_owned()
+                     ? cell->id() < neighbor->id()
+                     : cell->subdomain_id() < neighbor->subdomain_id());
+            if (!mine)
+              continue;
+            fiv.reinit(cell,
+                       f,
+                       numbers::invalid_unsigned_int,
+                       neighbor,
+                       neighbor_face,
+                       numbers::invalid_unsigned_int);
+          }
+        work(fiv, h_inverse);
+      }
   }
 } // namespace DuctileContact

@@ -5,6 +5,7 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <ductile_contact/app/energy_account.h>
 #include <ductile_contact/app/run_parameters.h>
 #include <ductile_contact/assembly/quadrature_history.h>
 #include <ductile_contact/assembly/system_assembler.h>
@@ -28,16 +29,13 @@ namespace DuctileContact
   class SolutionWriter;
 
   /**
-   * One quasi-static run: mesh, discretisation, and the load-step loop with
-   * cut-back (model.md section 6). An accepted step commits the quadrature-
-   * point history (a failed attempt leaves none). Per accepted step it
-   * records reactions, mean boundary displacements, the energies (elastic
-   * Psi^e, plastic work W_p and hardening energy, fracture energy g_c int
-   * gamma, viscous phase-field dissipation D_f), external work (trapezoidal
-   * rule, W += 1/2 (f_n + f_n+1) . (u_n+1 - u_n)) and the energy-balance
-   * residual W_ext - Psi^e - W_p - g_c int gamma - D_f - D_c (D_c the
-   * frictional dissipation (47) of the contact pairs), and writes the
-   * statistics table and output.
+   * One quasi-static run (model.md section 6): the mesh and the objects of
+   * the coupled problem are set up, then the load-step loop: a step is
+   * solved by the CoupledSolver; a failed step is repeated with a smaller
+   * increment (StepController), an accepted one commits the quadrature-
+   * point history and the contact state (a failed attempt leaves none),
+   * adds to the EnergyAccount, writes a row of the statistics table and
+   * the output, and prints a ProgressLine.
    * Reaction forces are sums of f_int (condensed with the hanging-node
    * constraints) over the DoFs a boundary constrains.
    */
@@ -56,6 +54,27 @@ namespace DuctileContact
   private:
     void
     setup();
+    /// The columns of the boundaries (mean displacement, force) and of
+    /// the probes.
+    void
+    add_boundary_columns(const double t);
+    /// max_alpha, min_alpha_change_yielding, max_s, min_s_change.
+    void
+    add_field_columns();
+    void
+    add_contact_columns(const StepReport &report);
+    void
+    add_solver_columns(const StepReport &report, const unsigned int cutbacks);
+    /// Whether block @p b has unknowns.
+    bool
+    has_block(const unsigned int b) const;
+    void
+    write_output(const unsigned int step, const double t);
+    /// Commits the accepted state #u of @p step_data (the step started
+    /// from @p u_old).
+    void
+    accept_step(const StepData                                   &step_data,
+                const dealii::TrilinosWrappers::MPI::BlockVector &u_old);
     void
     record_step(const unsigned int step,
                 const double       t,
@@ -102,15 +121,11 @@ namespace DuctileContact
     std::vector<std::array<dealii::IndexSet, dim>> boundary_dofs;
 
     dealii::TrilinosWrappers::MPI::BlockVector u, u_ghosted, internal_force,
-      previous_internal_force, old_solution;
+      old_solution;
     QuadratureHistory history;
     CellQuantities    cell_quantities;
     AssemblyInfo      committed;
-    double            external_work         = 0.;
-    double            plastic_work          = 0.;
-    double            fracture_viscous_work = 0.;
-    /// Sum of AssemblyInfo::history_work_increment over accepted steps.
-    double history_driving_work = 0.;
+    EnergyAccount     energy;
     /// min over s DoFs of s_n+1 - s_n of the last step (irreversibility).
     double min_phase_field_change = 0.;
     double max_phase_field        = 0.;

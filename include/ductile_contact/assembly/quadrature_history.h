@@ -21,7 +21,7 @@ namespace DuctileContact
   /**
    * Quadrature-point history of every locally owned cell, indexed by the
    * active cell index. It is written only when a load step is accepted
-   * (SystemAssembler::assemble with a commit target), so a rejected or
+   * (SystemAssembler::commit()), so a rejected or
    * cut-back step leaves no trace. The mesh must not change while it is
    * in use.
    */

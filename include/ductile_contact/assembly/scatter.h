@@ -4,7 +4,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <ductile_contact/assembly/system_assembler.h>
+#include <ductile_contact/assembly/assembly_data.h>
 
 #include <vector>
 
@@ -14,12 +14,12 @@ namespace DuctileContact
    * Adds one local contribution to every requested target: tangent and
    * Newton right-hand side -R (condensed with the Newton @p constraints),
    * the residual R = -@p rhs, and @p f_int condensed with the
-   * @p hanging_nodes constraints only. @p rhs is overwritten. Used by the
+   * @p hanging_nodes constraints only. Used by the
    * bulk assembly (cells and C0IP faces) and by contact.
    */
   void
   scatter(const dealii::FullMatrix<double>                   &matrix,
-          dealii::Vector<double>                             &rhs,
+          const dealii::Vector<double>                       &rhs,
           const dealii::Vector<double>                       &f_int,
           const std::vector<dealii::types::global_dof_index> &indices,
           const dealii::AffineConstraints<double>            &constraints,

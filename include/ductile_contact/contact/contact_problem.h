@@ -6,7 +6,7 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
-#include <ductile_contact/assembly/system_assembler.h>
+#include <ductile_contact/assembly/assembly_data.h>
 #include <ductile_contact/contact/contact_parameters.h>
 #include <ductile_contact/contact/contact_surface.h>
 #include <ductile_contact/contact/nodal_contact.h>

@@ -172,6 +172,9 @@ namespace DuctileContact
     Vector newton_rhs, residual, force, u_ghosted;
 
     AssemblyInfo last_info, accepted_info;
+    /// The branches of the last tangent assembly (frozen in the line
+    /// search and the tangent check).
+    BranchRecord branches;
 
     /// The bound of the current solve (if it is bounded).
     std::optional<PhaseFieldBound>  bound;

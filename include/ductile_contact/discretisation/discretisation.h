@@ -24,6 +24,13 @@ namespace DuctileContact
     bool phase_field = false; ///< s (fracture)
   };
 
+  /// The local DoFs of one element of the FE collection by field: the
+  /// displacement DoFs with their component, alpha's and s's.
+  struct LocalDofs
+  {
+    std::vector<unsigned int> u, u_component, alpha, s;
+  };
+
   /**
    * The finite element layout of model.md section 1 on one distributed mesh:
    * an hp::FECollection whose elements are FESystem(FE_Q(p)^3, alpha, s),
@@ -53,6 +60,25 @@ namespace DuctileContact
     static unsigned int
     fe_index(const BodyFields &fields);
 
+    /// The fields carried by the element @p fe_index of the collection.
+    static BodyFields
+    fields(const unsigned int fe_index);
+
+    /// The fields a cell carries.
+    template <typename CellIterator>
+    BodyFields
+    cell_fields(const CellIterator &cell) const
+    {
+      return fields(cell->active_fe_index());
+    }
+
+    /// The local DoFs by field of the element @p fe_index.
+    const LocalDofs &
+    local_dofs(const unsigned int fe_index) const
+    {
+      return dofs_by_field[fe_index];
+    }
+
     const dealii::parallel::distributed::Triangulation<dim> &triangulation;
     const unsigned int                                       degree;
     const std::map<dealii::types::material_id, BodyFields>   bodies;
@@ -71,6 +97,9 @@ namespace DuctileContact
 
     /// Hanging-node constraints only (closed).
     dealii::AffineConstraints<double> hanging_node_constraints;
+
+    /// Per element of #fe_collection.
+    std::vector<LocalDofs> dofs_by_field;
 
     const dealii::FEValuesExtractors::Vector displacement{
       Component::first_displacement};

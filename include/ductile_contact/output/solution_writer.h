@@ -2,7 +2,7 @@
 
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
-#include <ductile_contact/assembly/system_assembler.h>
+#include <ductile_contact/assembly/assembly_data.h>
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/materials/body_parameters.h>
 

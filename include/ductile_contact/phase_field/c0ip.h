@@ -96,4 +96,16 @@ namespace DuctileContact
     const std::function<void(const dealii::FEInterfaceValues<dim> &fiv,
                              const double h_inverse)> &work,
     const unsigned int                                 active_fe_index = 0);
+
+  /**
+   * The faces of for_each_interior_face() that the locally owned @p cell
+   * visits (the rule there decides which of two cells takes a face), for
+   * an assembly that adds the face terms of a cell with its cell terms.
+   */
+  void
+  for_each_owned_interior_face(
+    const dealii::DoFHandler<dim>::active_cell_iterator &cell,
+    dealii::FEInterfaceValues<dim>                      &fiv,
+    const std::function<void(const dealii::FEInterfaceValues<dim> &fiv,
+                             const double h_inverse)>   &work);
 } // namespace DuctileContact

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <ductile_contact/assembly/assembly_data.h>
+#include <ductile_contact/output/statistics.h>
+
+namespace DuctileContact
+{
+  /**
+   * The energy account of a run (model.md section 6), summed over accepted
+   * steps: the external work by the trapezoidal rule,
+   *
+   *   W_ext += 1/2 (f_n + f_n+1) . (u_n+1 - u_n)
+   *
+   * (f the internal force, whose entries on prescribed DoFs are the
+   * reactions), the plastic work W_p, the viscous phase-field dissipation
+   * D_f and the history driving work (AssemblyInfo), and the energy-balance
+   * residual
+   *
+   *   W_ext - Psi^e - W_p - g_c int gamma - D_f - D_c
+   *
+   * with D_c the frictional dissipation (47) of the contact pairs. All in
+   * [J].
+   */
+  class EnergyAccount
+  {
+  public:
+    /// Adds an accepted step: internal force @p force at its end, the
+    /// increment @p increment of the solution and the commit's @p committed.
+    void
+    add_step(const dealii::TrilinosWrappers::MPI::BlockVector &force,
+             const dealii::TrilinosWrappers::MPI::BlockVector &increment,
+             const AssemblyInfo                               &committed);
+
+    /// The columns stored_energy, external_work, [plastic_work,
+    /// hardening_energy], [fracture_energy, fracture_viscous_work,
+    /// history_driving_work] and energy_residual at the state @p committed.
+    void
+    add_columns(Statistics         &statistics,
+                const AssemblyInfo &committed,
+                const bool          plastic,
+                const bool          cracking,
+                const double        contact_dissipation) const;
+
+  private:
+    dealii::TrilinosWrappers::MPI::BlockVector previous_force;
+    double                                     external_work         = 0.;
+    double                                     plastic_work          = 0.;
+    double                                     fracture_viscous_work = 0.;
+    double                                     history_driving_work  = 0.;
+  };
+} // namespace DuctileContact

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <ductile_contact/solver/solver_parameters.h>
+
+namespace DuctileContact
+{
+  /**
+   * The load-step size of the quasi-static pseudo time (subsection `Load
+   * stepping`): a failed step is repeated with half the increment
+   * (cut-back); the increment grows by `Growth factor` after an easy step
+   * (at most `Easy step Newton iterations`) or after `Growth after accepted
+   * steps` accepted steps in a row at one increment, never beyond `Time
+   * step`.
+   */
+  class StepController
+  {
+  public:
+    explicit StepController(const LoadSteppingParameters &parameters);
+
+    /// The increment to try from time @p t.
+    double
+    next_increment(const double t) const;
+
+    /// After the failed attempt @p dt_try: halves it; false when the next
+    /// increment would be below `Minimum time step`.
+    bool
+    reject(const double dt_try);
+
+    /// After the accepted step @p dt_try that took @p newton_iterations.
+    void
+    accept(const double dt_try, const unsigned int newton_iterations);
+
+    /// Cut-backs of the step being solved.
+    unsigned int
+    cutbacks() const
+    {
+      return n_cutbacks_of_step;
+    }
+
+    /// The increment after the last reject() or accept().
+    double
+    increment() const
+    {
+      return dt;
+    }
+
+  private:
+    const LoadSteppingParameters &parameters;
+    double                        dt;
+    unsigned int                  n_cutbacks_of_step   = 0;
+    unsigned int                  same_increment_steps = 0;
+    double                        last_accepted_dt     = 0.;
+  };
+} // namespace DuctileContact

@@ -1,0 +1,205 @@
+#pragma once
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <ductile_contact/assembly/quadrature_history.h>
+#include <ductile_contact/core/types.h>
+
+#include <array>
+#include <limits>
+#include <vector>
+
+namespace DuctileContact
+{
+  /// What one assembly pass found (all values summed over MPI ranks).
+  struct AssemblyInfo
+  {
+    /// An element is inverted (J <= 0 at a quadrature point): the state
+    /// is not admissible and nothing else here is meaningful.
+    bool   inverted = false;
+    double min_J    = 1.;
+    /// int Psi^e dV over the reference configuration [J] (degraded).
+    double stored_energy = 0.;
+    /// int (int_0^alpha yhat da + y_0 l_p^2/2 |grad alpha|^2) dV [J], (20).
+    double hardening_energy = 0.;
+    /// g_c int gamma dV with the C0IP-consistent bi-Laplacian [J]:
+    /// a(s, s)/2 of phase_field/c0ip.h.
+    double fracture_energy = 0.;
+    /// Of the step from the committed state to this one [J]: the plastic
+    /// work, i.e. the elastic energy the plastic flow releases at fixed F,
+    /// int Psi^e(F, C^p_n) - Psi^e(F, C^p) dV (= int tau : d^p dt to first
+    /// order in dt; exactly consistent with Psi^e, so that the energy
+    /// balance closes as dt -> 0), and the viscous dissipation of the
+    /// phase field int eta_f (s - s_n)^2/dt. The plastic work is only
+    /// computed by the commit pass (SystemAssembler::commit()).
+    double plastic_work_increment          = 0.;
+    double fracture_viscous_work_increment = 0.;
+    /// Of the committed step [J]: the work of the crack-driver history
+    /// beyond the current elastic state, int (-g_k'(s)) (psi_H - psi^+)
+    /// (s - s_n) dV >= 0 (psi_H the history maximum of psi^+, model.md
+    /// (27)). It is nonzero where psi^+ has fallen below its maximum while s
+    /// still grows (material unloading beside a running crack). The history
+    /// driver is not the derivative of an energy, so the energy balance
+    /// W_ext = Psi^e + plastic work + fracture energy + viscous work misses
+    /// about minus this (to first order in dt); see the statistics column
+    /// history_driving_work.
+    double history_work_increment = 0.;
+    /// Largest alpha at a quadrature point, and the smallest alpha -
+    /// alpha_n over the yielding ones (chi_p = 1; +inf if none yields): a
+    /// negative value is plastic flow reversed by the gradient term.
+    double max_alpha                    = 0.;
+    double min_yielding_alpha_increment = std::numeric_limits<double>::max();
+    /// Quadrature points whose yield switch chi_p or crack-driver branch
+    /// (loading: psi^+ above its history maximum) differs from the frozen
+    /// one (Branches::frozen only): with none, R is the true residual.
+    unsigned int switch_flips = 0;
+    /// Size of the terms summed into f_int: sqrt of the sum over cells and
+    /// DoFs of (sum over quadrature points of (|P : Grad N_i| + (mu + kappa)
+    /// |Grad N_i|) JxW)^2 [N]. F = I + Grad u resolves Grad u only to eps,
+    /// so P is uncertain by eps (mu + kappa): ||R|| cannot drop much below
+    /// eps times this, whatever the solver does.
+    double force_magnitude = 0.;
+    /// Residual scale of each block: for alpha y_0 and for s g_c/(2 l_f)
+    /// times sqrt(sum over cells and DoFs of (int N_i dV)^2), i.e. the size
+    /// of the local terms at alpha = 1 or s = 1 [J]; force_magnitude for u.
+    std::array<double, Block::n_blocks> residual_scale{{0., 0., 0.}};
+    /// Size of the terms summed into each block of R, as force_magnitude
+    /// (which is the u entry): eps times it is the round-off floor of the
+    /// block's residual norm.
+    std::array<double, Block::n_blocks> residual_magnitude{{0., 0., 0.}};
+  };
+
+  /**
+   * The per-rank sums of one assembly pass, by name: each cell adds its
+   * own (AssemblyReduction::add), and the pass ends with one reduction over
+   * the MPI ranks (sum_over_ranks()).
+   */
+  struct AssemblyReduction
+  {
+    double stored_energy                   = 0.;
+    double hardening_energy                = 0.;
+    double fracture_energy                 = 0.;
+    double plastic_work_increment          = 0.;
+    double fracture_viscous_work_increment = 0.;
+    double history_work_increment          = 0.;
+    /// Sums of squares of the cell magnitudes and scales per block (the
+    /// scale of u is its magnitude).
+    std::array<double, Block::n_blocks> magnitude_squared{{0., 0., 0.}};
+    std::array<double, Block::n_blocks> scale_squared{{0., 0., 0.}};
+    double min_J                        = std::numeric_limits<double>::max();
+    double max_alpha                    = 0.;
+    double min_yielding_alpha_increment = std::numeric_limits<double>::max();
+    bool   inverted                     = false;
+    unsigned int switch_flips           = 0;
+
+    void
+    add(const AssemblyReduction &other);
+
+    AssemblyInfo
+    sum_over_ranks(const MPI_Comm comm) const;
+  };
+
+  /// Cell averages for graphical output, indexed by active cell index.
+  struct CellQuantities
+  {
+    dealii::Vector<float> von_mises, mean_stress, J, crack_driving_force;
+  };
+
+  /**
+   * The branches of the non-smooth terms at each quadrature point: the
+   * yield switch chi_p of (50), and the branch of the crack driver
+   * max(psi^+, H_n) (Miehe's history field: loading where psi^+ > H_n).
+   * A tangent assembly records them (Branches::record), the line search
+   * and the tangent check evaluate with them (Branches::frozen), so that R
+   * is smooth along the Newton direction and its derivative there is the
+   * tangent's. Indexed by active cell index; empty for cells without alpha
+   * and s.
+   */
+  class BranchRecord
+  {
+  public:
+    static constexpr unsigned char yielding = 1, loading = 2;
+
+    /// Forgets every branch (before a recording pass).
+    void
+    reset(const unsigned int n_active_cells)
+    {
+      bits.assign(n_active_cells, {});
+    }
+
+    /// Whether a recording pass has filled the record for this mesh.
+    bool
+    covers(const unsigned int n_active_cells) const
+    {
+      return bits.size() == n_active_cells;
+    }
+
+    /// Starts the record of cell @p cell with @p n_points points.
+    void
+    start_cell(const unsigned int cell, const unsigned int n_points)
+    {
+      bits[cell].assign(n_points, 0);
+    }
+
+    void
+    set(const unsigned int cell, const unsigned int q, const unsigned char b)
+    {
+      bits[cell][q] |= b;
+    }
+
+    bool
+    get(const unsigned int  cell,
+        const unsigned int  q,
+        const unsigned char b) const
+    {
+      return (bits[cell].at(q) & b) != 0;
+    }
+
+  private:
+    std::vector<std::vector<unsigned char>> bits;
+  };
+
+  /// How an assembly treats the branches of non-smooth terms.
+  enum class Branches
+  {
+    /// from the current state;
+    evaluate,
+    /// from the current state, and written into the BranchRecord;
+    record,
+    /// those of the BranchRecord.
+    frozen
+  };
+
+  /// Where an assembly of the system writes; null members are skipped.
+  struct AssemblyTargets
+  {
+    /// Newton tangent K, condensed with the Newton constraints.
+    dealii::TrilinosWrappers::BlockSparseMatrix *tangent = nullptr;
+    /// -R condensed with the (inhomogeneous) Newton constraints: the
+    /// right-hand side of K delta = -R.
+    dealii::TrilinosWrappers::MPI::BlockVector *newton_rhs = nullptr;
+    /// R on free DoFs (constrained entries zero): its norm decides
+    /// convergence.
+    dealii::TrilinosWrappers::MPI::BlockVector *residual = nullptr;
+    /// f_int condensed with the hanging-node constraints only (Dirichlet
+    /// rows kept): reactions and external work come from it.
+    dealii::TrilinosWrappers::MPI::BlockVector *internal_force = nullptr;
+    /// The branch record that Branches::record writes and
+    /// Branches::frozen reads.
+    BranchRecord *branch_record = nullptr;
+    Branches      branches      = Branches::evaluate;
+  };
+
+  /// The load step being solved: time, step and the accepted state before.
+  struct StepData
+  {
+    double t  = 0.;
+    double dt = 1.;
+    /// Solution of the last accepted step, with ghost entries.
+    const dealii::TrilinosWrappers::MPI::BlockVector *old_solution = nullptr;
+    const QuadratureHistory                          *history      = nullptr;
+  };
+} // namespace DuctileContact

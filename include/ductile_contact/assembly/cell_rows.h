@@ -1,0 +1,120 @@
+#pragma once
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <ductile_contact/discretisation/discretisation.h>
+#include <ductile_contact/materials/body_material.h>
+#include <ductile_contact/materials/body_parameters.h>
+#include <ductile_contact/phase_field/c0ip.h>
+
+#include <vector>
+
+namespace DuctileContact
+{
+  /**
+   * The rows one cell (or one C0IP face) adds to the system: the local
+   * tangent, f_int and the Newton right-hand side -R over its DoFs, and per
+   * DoF the size of the terms summed into it (AssemblyInfo::
+   * residual_magnitude) and the scale of the local terms of alpha and s
+   * (AssemblyInfo::residual_scale).
+   */
+  struct LocalRows
+  {
+    dealii::FullMatrix<double>                   matrix;
+    dealii::Vector<double>                       f_int, rhs, magnitude;
+    dealii::Vector<double>                       scale_alpha, scale_s;
+    std::vector<dealii::types::global_dof_index> indices;
+
+    void
+    reinit(const unsigned int n_dofs);
+  };
+
+  /// Shape functions of one quadrature point by field (scratch of the
+  /// row functions).
+  struct PointShapes
+  {
+    std::vector<dealii::Tensor<1, dim>> u_grad;
+    std::vector<double>                 alpha_value, s_value;
+    std::vector<dealii::Tensor<1, dim>> alpha_grad;
+    /// Grad N_k : dP/dF JxW per displacement DoF (rows of the u-u block).
+    std::vector<dealii::Tensor<2, dim>> grad_times_A;
+
+    /// The shapes of point @p q of @p fe_values for the DoFs @p dofs.
+    void
+    reinit(const dealii::FEValues<dim> &fe_values,
+           const unsigned int           q,
+           const LocalDofs             &dofs);
+  };
+
+  /// The crack driver of (51) at a point: psi^+_H and its branch, and the
+  /// derivatives of the degradation at s.
+  struct CrackDriver
+  {
+    double psi_H   = 0.;
+    bool   loading = false;  ///< psi^+_H = psi^+ (above the history maximum)
+    double g1 = 0., g2 = 0.; ///< g_k'(s), g_k''(s)
+  };
+
+  /// int_0^alpha yhat(a) da for the saturation law (21).
+  double
+  integrated_hardening(const double alpha, const PlasticityParameters &p);
+
+  /// The coefficients of g_c gamma for a body that cracks.
+  C0IPCoefficients
+  crack_coefficients(const BodyParameters &body, const unsigned int degree);
+
+  /// Displacement rows int P : Grad du dV at one point and their tangent
+  /// dP/dF (u-u block).
+  void
+  add_displacement_rows(const PointResponse  &m,
+                        const BodyParameters &body,
+                        PointShapes          &shapes,
+                        const LocalDofs      &dofs,
+                        const double          JxW,
+                        const bool            tangent,
+                        LocalRows            &rows);
+
+  /// Hardening rows (50) at one point, int dalpha r + y_0 l_p^2 grad
+  /// dalpha . grad alpha dV, with their tangent (alpha rows and the u-alpha
+  /// coupling).
+  void
+  add_hardening_rows(const PointResponse          &m,
+                     const PlasticityParameters   &plastic,
+                     const double                  gradient_coefficient,
+                     const dealii::Tensor<1, dim> &grad_alpha,
+                     const PointShapes            &shapes,
+                     const LocalDofs              &dofs,
+                     const double                  JxW,
+                     const bool                    tangent,
+                     LocalRows                    &rows);
+
+  /// Phase-field rows of (51) at one point without a(s, ds) (added by
+  /// add_crack_functional_rows()): int (eta_f (s - s_n)/dt + g_k'(s)
+  /// psi^+_H) ds dV, with their tangent (s rows and the u-s coupling).
+  void
+  add_phase_field_rows(const PointResponse  &m,
+                       const CrackDriver    &driver,
+                       const BodyParameters &body,
+                       const double          rate,
+                       const double          dt,
+                       const PointShapes    &shapes,
+                       const LocalDofs      &dofs,
+                       const double          JxW,
+                       const bool            tangent,
+                       LocalRows            &rows);
+
+  /// The crack functional's cell terms a_K(s, ds) (linear in s) with the
+  /// local values @p s_values of all cell DoFs; returns a_K(s, s)/2.
+  double
+  add_crack_functional_rows(const dealii::FEValues<dim>  &fe_values,
+                            const Discretisation         &discretisation,
+                            const BodyParameters         &body,
+                            const dealii::Vector<double> &cell_values,
+                            const LocalDofs              &dofs,
+                            const bool                    tangent,
+                            dealii::FullMatrix<double>   &c0ip_matrix,
+                            LocalRows                    &rows);
+} // namespace DuctileContact

@@ -1,0 +1,55 @@
+#include <ductile_contact/app/step_controller.h>
+
+#include <algorithm>
+
+namespace DuctileContact
+{
+  StepController::StepController(const LoadSteppingParameters &parameters)
+      : parameters(parameters)
+      , dt(parameters.time_step)
+  {
+  }
+
+
+
+  double
+  StepController::next_increment(const double t) const
+  {
+    return std::min(dt, parameters.end_time - t);
+  }
+
+
+
+  bool
+  StepController::reject(const double dt_try)
+  {
+    dt = 0.5 * dt_try;
+    ++n_cutbacks_of_step;
+    return dt >= parameters.minimum_time_step;
+  }
+
+
+
+  void
+  StepController::accept(const double       dt_try,
+                         const unsigned int newton_iterations)
+  {
+    // A run of accepted steps at one increment; a cut-back or a change of
+    // the increment starts a new run.
+    same_increment_steps =
+      (n_cutbacks_of_step == 0 && dt_try == last_accepted_dt)
+        ? same_increment_steps + 1
+        : 1;
+    last_accepted_dt   = dt_try;
+    n_cutbacks_of_step = 0;
+    if (newton_iterations <= parameters.easy_newton_steps ||
+        (parameters.steps_before_growth > 0 &&
+         same_increment_steps >= parameters.steps_before_growth))
+      {
+        dt = std::min(dt_try * parameters.growth_factor, parameters.time_step);
+        same_increment_steps = 0;
+      }
+    else
+      dt = dt_try;
+  }
+} // namespace DuctileContact

@@ -1,0 +1,471 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/physics/elasticity/standard_tensors.h>
+
+#include <ductile_contact/assembly/cell_rows.h>
+#include <ductile_contact/assembly/cell_scratch.h>
+#include <ductile_contact/assembly/system_assembler.h>
+#include <ductile_contact/materials/body_material.h>
+#include <ductile_contact/materials/degradation.h>
+#include <ductile_contact/materials/neo_hooke.h>
+#include <ductile_contact/phase_field/c0ip.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  void
+  AssemblyReduction::add(const AssemblyReduction &o)
+  {
+    stored_energy += o.stored_energy;
+    hardening_energy += o.hardening_energy;
+    fracture_energy += o.fracture_energy;
+    plastic_work_increment += o.plastic_work_increment;
+    fracture_viscous_work_increment += o.fracture_viscous_work_increment;
+    history_work_increment += o.history_work_increment;
+    for (unsigned int b = 0; b < Block::n_blocks; ++b)
+      {
+        magnitude_squared[b] += o.magnitude_squared[b];
+        scale_squared[b] += o.scale_squared[b];
+      }
+    min_J     = std::min(min_J, o.min_J);
+    max_alpha = std::max(max_alpha, o.max_alpha);
+    min_yielding_alpha_increment =
+      std::min(min_yielding_alpha_increment, o.min_yielding_alpha_increment);
+    inverted = inverted || o.inverted;
+    switch_flips += o.switch_flips;
+  }
+
+
+
+  AssemblyInfo
+  AssemblyReduction::sum_over_ranks(const MPI_Comm comm) const
+  {
+    AssemblyInfo info;
+    info.inverted  = Utilities::MPI::max(inverted ? 1 : 0, comm) > 0;
+    info.min_J     = Utilities::MPI::min(min_J, comm);
+    info.max_alpha = Utilities::MPI::max(max_alpha, comm);
+    info.min_yielding_alpha_increment =
+      Utilities::MPI::min(min_yielding_alpha_increment, comm);
+    info.switch_flips = Utilities::MPI::sum(switch_flips, comm);
+    std::vector<double> sums{stored_energy,
+                             hardening_energy,
+                             fracture_energy,
+                             plastic_work_increment,
+                             fracture_viscous_work_increment,
+                             history_work_increment};
+    for (unsigned int b = 0; b < Block::n_blocks; ++b)
+      {
+        sums.push_back(magnitude_squared[b]);
+        sums.push_back(scale_squared[b]);
+      }
+    Utilities::MPI::sum(sums, comm, sums);
+    info.stored_energy                   = sums[0];
+    info.hardening_energy                = sums[1];
+    info.fracture_energy                 = sums[2];
+    info.plastic_work_increment          = sums[3];
+    info.fracture_viscous_work_increment = sums[4];
+    info.history_work_increment          = sums[5];
+    for (unsigned int b = 0; b < Block::n_blocks; ++b)
+      {
+        info.residual_magnitude[b] = std::sqrt(sums[6 + 2 * b]);
+        info.residual_scale[b]     = std::sqrt(sums[7 + 2 * b]);
+      }
+    // The scale of the u rows is the size of their terms.
+    info.force_magnitude = info.residual_magnitude[Block::displacement];
+    info.residual_scale[Block::displacement] = info.force_magnitude;
+    return info;
+  }
+
+
+
+  namespace
+  {
+    /// The crack driver of (51) at point @p q: psi^+_H = max(psi^+, H_n)
+    /// with the branch evaluated, recorded or frozen.
+    CrackDriver
+    crack_driver(const PointResponse         &m,
+                 const double                 psi_max,
+                 const double                 s,
+                 const DegradationParameters &degradation,
+                 const AssemblyTargets       *targets,
+                 const unsigned int           cell_index,
+                 const unsigned int           q,
+                 AssemblyReduction           &sums)
+    {
+      CrackDriver d;
+      d.loading = m.psi_plus > psi_max;
+      if (targets && targets->branches == Branches::record)
+        targets->branch_record->set(cell_index,
+                                    q,
+                                    d.loading ? BranchRecord::loading : 0);
+      else if (targets && targets->branches == Branches::frozen)
+        {
+          const bool frozen_loading =
+            targets->branch_record->get(cell_index, q, BranchRecord::loading);
+          if (frozen_loading != d.loading)
+            ++sums.switch_flips;
+          d.loading = frozen_loading;
+        }
+      d.psi_H = d.loading ? m.psi_plus : psi_max;
+      d.g1    = degradation_derivative(s, degradation);
+      d.g2    = degradation_second_derivative(s, degradation);
+      return d;
+    }
+
+
+
+    /// The solution of @p pass on @p cell at the quadrature points.
+    void
+    load_cell_state(const FEValues<dim>                      &fe_values,
+                    const Discretisation                     &discretisation,
+                    const BodyFields                         &fields,
+                    const TrilinosWrappers::MPI::BlockVector &u,
+                    const StepData                           &step,
+                    const bool                                committing,
+                    CellScratch                              &scratch)
+    {
+      const unsigned int n_q = fe_values.n_quadrature_points;
+      scratch.grad_u.resize(n_q);
+      fe_values[discretisation.displacement].get_function_gradients(
+        u, scratch.grad_u);
+      scratch.alpha.assign(n_q, 0.);
+      scratch.grad_alpha.assign(n_q, Tensor<1, dim>());
+      scratch.s.assign(n_q, 0.);
+      scratch.s_old.assign(n_q, 0.);
+      scratch.grad_u_old.assign(n_q, Tensor<2, dim>());
+      if (fields.hardening)
+        {
+          if (step.old_solution && committing)
+            fe_values[discretisation.displacement].get_function_gradients(
+              *step.old_solution, scratch.grad_u_old);
+          fe_values[discretisation.hardening].get_function_values(
+            u, scratch.alpha);
+          fe_values[discretisation.hardening].get_function_gradients(
+            u, scratch.grad_alpha);
+        }
+      if (fields.phase_field)
+        {
+          fe_values[discretisation.phase_field].get_function_values(u,
+                                                                    scratch.s);
+          if (step.old_solution)
+            fe_values[discretisation.phase_field].get_function_values(
+              *step.old_solution, scratch.s_old);
+        }
+    }
+
+
+
+    /// The plastic work of the step at one point: the elastic energy the
+    /// flow C^p_n -> C^p releases, averaged over F_n and F (second order
+    /// in dt; together with the trapezoidal external work the energy
+    /// balance then closes as dt -> 0).
+    double
+    plastic_work(const Tensor<2, dim>       &F,
+                 const Tensor<2, dim>       &grad_u_old,
+                 const PointResponse        &m,
+                 const PlasticHistory       &history_n,
+                 const double                s,
+                 const PlasticityParameters &plastic)
+    {
+      const SymmetricTensor<2, dim> &C_n = history_n.Cp_inv;
+      const Tensor<2, dim>           F_n =
+        Physics::Elasticity::StandardTensors<dim>::I + grad_u_old;
+      return 0.5 * (elastic_energy(F, C_n, s, plastic) - m.psi_elastic +
+                    elastic_energy(F_n, C_n, s, plastic) -
+                    elastic_energy(F_n, m.updated.Cp_inv, s, plastic));
+    }
+  } // namespace
+
+
+
+  void
+  SystemAssembler::cell_worker(
+    const DoFHandler<dim>::active_cell_iterator &cell,
+    CellScratch                                 &scratch,
+    CellCopy                                    &copy,
+    const Pass                                  &pass) const
+  {
+    const StepData        &step      = *pass.step;
+    const AssemblyTargets *targets   = pass.targets;
+    const BodyFields       fields    = discretisation.cell_fields(cell);
+    const bool             has_alpha = fields.hardening;
+    const bool             has_s     = fields.phase_field;
+    const bool             tangent   = targets && targets->tangent;
+    const Branches     mode  = targets ? targets->branches : Branches::evaluate;
+    const unsigned int index = cell->active_cell_index();
+    hp::FEValues<dim> &hp_values =
+      (has_alpha || has_s) ? scratch.coupled_values : scratch.elastic_values;
+    hp_values.reinit(cell);
+    const FEValues<dim>        &fe_values = hp_values.get_present_fe_values();
+    const unsigned int          n_q       = fe_values.n_quadrature_points;
+    const BodyParameters       &body      = *bodies.at(cell->material_id());
+    const PlasticityParameters  plastic   = body.material();
+    const DegradationParameters degradation{body.crack.degradation_a,
+                                            body.crack.residual_stiffness};
+    const LocalDofs &dofs = discretisation.local_dofs(cell->active_fe_index());
+
+    copy.sums         = AssemblyReduction();
+    copy.n_faces      = 0;
+    copy.has_averages = false;
+    copy.cell_index   = index;
+    LocalRows &rows   = copy.cell;
+    rows.reinit(cell->get_fe().n_dofs_per_cell());
+    cell->get_dof_indices(rows.indices);
+    AssemblyReduction &sums = copy.sums;
+
+    load_cell_state(fe_values,
+                    discretisation,
+                    fields,
+                    *pass.u,
+                    step,
+                    pass.updated_history != nullptr,
+                    scratch);
+    scratch.history_n.assign(n_q, &scratch.default_history);
+    if (step.history && (has_alpha || has_s))
+      for (unsigned int q = 0; q < n_q; ++q)
+        scratch.history_n[q] = (*step.history)(cell) + q;
+    PointHistory *history_new = (pass.updated_history && (has_alpha || has_s))
+                                  ? (*pass.updated_history)(cell)
+                                  : nullptr;
+    if (mode == Branches::record && (has_alpha || has_s))
+      targets->branch_record->start_cell(index, n_q);
+
+    double volume = 0, vm = 0, mean = 0, mean_J = 0, driver_sum = 0;
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const Tensor<2, dim> F =
+          Physics::Elasticity::StandardTensors<dim>::I + scratch.grad_u[q];
+        const double J = determinant(F);
+        sums.min_J     = std::min(sums.min_J, J);
+        if (!(J > 0.))
+          {
+            sums.inverted = true;
+            continue;
+          }
+        const PointHistory &history = *scratch.history_n[q];
+        std::optional<bool> frozen;
+        if (has_alpha && mode == Branches::frozen)
+          frozen =
+            targets->branch_record->get(index, q, BranchRecord::yielding);
+        const PointResponse m = evaluate_material(body,
+                                                  F,
+                                                  history.plastic,
+                                                  scratch.alpha[q],
+                                                  scratch.s[q],
+                                                  step.dt,
+                                                  tangent,
+                                                  frozen);
+        if (mode == Branches::record && (has_alpha || has_s) && m.yielding)
+          targets->branch_record->set(index, q, BranchRecord::yielding);
+        if (frozen && m.trial_yielding != *frozen)
+          ++sums.switch_flips;
+        const double JxW = fe_values.JxW(q);
+        sums.stored_energy += m.psi_elastic * JxW;
+        volume += JxW;
+        vm += von_mises(m.tau) * JxW;
+        mean += trace(m.tau) / 3. * JxW;
+        mean_J += m.J * JxW;
+
+        scratch.shapes.reinit(fe_values, q, dofs);
+        add_displacement_rows(
+          m, body, scratch.shapes, dofs, JxW, tangent, rows);
+
+        if (has_alpha)
+          {
+            const double l_p = body.plastic_length_scale;
+            // The gradient term acts at every point, not only where chi_p
+            // = 1 (see plastic_update()).
+            const double gradient_coefficient =
+              plastic.initial_yield * l_p * l_p;
+            const double alpha = scratch.alpha[q];
+            sums.max_alpha     = std::max(sums.max_alpha, alpha);
+            if (m.yielding)
+              sums.min_yielding_alpha_increment =
+                std::min(sums.min_yielding_alpha_increment,
+                         alpha - history.plastic.alpha);
+            sums.hardening_energy += (integrated_hardening(alpha, plastic) +
+                                      0.5 * gradient_coefficient *
+                                        scratch.grad_alpha[q].norm_square()) *
+                                     JxW;
+            if (history_new)
+              sums.plastic_work_increment += plastic_work(F,
+                                                          scratch.grad_u_old[q],
+                                                          m,
+                                                          history.plastic,
+                                                          scratch.s[q],
+                                                          plastic) *
+                                             JxW;
+            add_hardening_rows(m,
+                               plastic,
+                               gradient_coefficient,
+                               scratch.grad_alpha[q],
+                               scratch.shapes,
+                               dofs,
+                               JxW,
+                               tangent,
+                               rows);
+          }
+
+        if (has_s)
+          {
+            const double psi_max = crack_history ? history.psi_plus_max : 0.;
+            const CrackDriver driver = crack_driver(
+              m, psi_max, scratch.s[q], degradation, targets, index, q, sums);
+            const double ds   = scratch.s[q] - scratch.s_old[q];
+            const double rate = ds / step.dt;
+            driver_sum += -driver.g1 * driver.psi_H * JxW;
+            sums.fracture_viscous_work_increment +=
+              body.crack.viscosity * rate * rate * step.dt * JxW;
+            if (history_new)
+              {
+                history_new[q].psi_plus_max = driver.psi_H;
+                sums.history_work_increment +=
+                  -driver.g1 * (driver.psi_H - m.psi_plus) * ds * JxW;
+              }
+            add_phase_field_rows(m,
+                                 driver,
+                                 body,
+                                 rate,
+                                 step.dt,
+                                 scratch.shapes,
+                                 dofs,
+                                 JxW,
+                                 tangent,
+                                 rows);
+          }
+        if (history_new && has_alpha)
+          history_new[q].plastic = m.updated;
+      }
+
+    if (has_s)
+      {
+        scratch.cell_values.reinit(rows.f_int.size());
+        cell->get_dof_values(*pass.u, scratch.cell_values);
+        sums.fracture_energy += add_crack_functional_rows(fe_values,
+                                                          discretisation,
+                                                          body,
+                                                          scratch.cell_values,
+                                                          dofs,
+                                                          tangent,
+                                                          scratch.c0ip_matrix,
+                                                          rows);
+      }
+
+    for (const unsigned int i : dofs.u)
+      sums.magnitude_squared[Block::displacement] +=
+        rows.magnitude(i) * rows.magnitude(i);
+    for (const unsigned int i : dofs.alpha)
+      sums.magnitude_squared[Block::hardening] +=
+        rows.magnitude(i) * rows.magnitude(i);
+    for (const unsigned int i : dofs.s)
+      sums.magnitude_squared[Block::phase_field] +=
+        rows.magnitude(i) * rows.magnitude(i);
+    sums.scale_squared[Block::hardening] += rows.scale_alpha.norm_sqr();
+    sums.scale_squared[Block::phase_field] += rows.scale_s.norm_sqr();
+    if (pass.averages && volume > 0.)
+      {
+        copy.has_averages        = true;
+        copy.von_mises           = vm / volume;
+        copy.mean_stress         = mean / volume;
+        copy.mean_J              = mean_J / volume;
+        copy.crack_driving_force = driver_sum / volume;
+      }
+
+    // R = f_int - f_ext; the Newton right-hand side is -R.
+    for (unsigned int i = 0; i < rows.rhs.size(); ++i)
+      rows.rhs(i) = -rows.f_int(i);
+    add_traction_rows(cell, scratch, step.t, dofs, rows);
+    if (has_s)
+      face_terms(cell, scratch, copy, pass);
+  }
+
+
+
+  void
+  SystemAssembler::add_traction_rows(
+    const DoFHandler<dim>::active_cell_iterator &cell,
+    CellScratch                                 &scratch,
+    const double                                 t,
+    const LocalDofs                             &dofs,
+    LocalRows                                   &rows) const
+  {
+    if (tractions.empty())
+      return;
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary())
+        {
+          const auto it = tractions.find(cell->face(f)->boundary_id());
+          if (it == tractions.end())
+            continue;
+          scratch.face_values.reinit(cell, f);
+          const FEFaceValues<dim> &fv =
+            scratch.face_values.get_present_fe_values();
+          for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+            {
+              const Tensor<1, dim> T =
+                it->second->traction_at(fv.quadrature_point(q), t);
+              for (unsigned int k = 0; k < dofs.u.size(); ++k)
+                rows.rhs(dofs.u[k]) += fv.shape_value(dofs.u[k], q) *
+                                       T[dofs.u_component[k]] * fv.JxW(q);
+            }
+        }
+  }
+
+
+
+  void
+  SystemAssembler::face_terms(const DoFHandler<dim>::active_cell_iterator &cell,
+                              CellScratch &scratch,
+                              CellCopy    &copy,
+                              const Pass  &pass) const
+  {
+    // The s block starts after u and alpha in the global numbering.
+    const types::global_dof_index first_s =
+      discretisation.dofs_per_block[Block::displacement] +
+      discretisation.dofs_per_block[Block::hardening];
+    const BodyParameters   &body = *bodies.at(cell->material_id());
+    FEInterfaceValues<dim> &fiv =
+      *scratch.interface_values[cell->active_fe_index()];
+    for_each_owned_interior_face(
+      cell,
+      fiv,
+      [&](const FEInterfaceValues<dim> &fiv, const double h_inverse) {
+        const unsigned int n = fiv.n_current_interface_dofs();
+        scratch.face_matrix.reinit(n, n);
+        add_c0ip_face_terms(fiv,
+                            discretisation.phase_field,
+                            crack_coefficients(body, discretisation.degree),
+                            h_inverse,
+                            scratch.face_matrix);
+
+        // Only the s DoFs carry face terms: keep the matrix to them, the
+        // sparsity pattern couples nothing else across faces.
+        const auto                indices = fiv.get_interface_dof_indices();
+        std::vector<unsigned int> s_local;
+        for (unsigned int i = 0; i < n; ++i)
+          if (indices[i] >= first_s)
+            s_local.push_back(i);
+        const unsigned int m = s_local.size();
+        if (copy.faces.size() <= copy.n_faces)
+          copy.faces.emplace_back();
+        LocalRows &face = copy.faces[copy.n_faces++];
+        face.reinit(m);
+        Vector<double> s_values(m);
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            face.indices[k] = indices[s_local[k]];
+            s_values(k)     = (*pass.u)(face.indices[k]);
+            for (unsigned int l = 0; l < m; ++l)
+              face.matrix(k, l) = scratch.face_matrix(s_local[k], s_local[l]);
+          }
+        face.matrix.vmult(face.f_int, s_values);
+        copy.sums.fracture_energy += 0.5 * (s_values * face.f_int);
+        face.rhs = face.f_int;
+        face.rhs *= -1.;
+      });
+  }
+} // namespace DuctileContact
