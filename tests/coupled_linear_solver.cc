@@ -220,11 +220,11 @@ namespace
     // cg-amg is GMRES with the same preconditioner for coupled systems.
     const unsigned int bound   = 30;
     const auto         run_all = [&](const std::string &label, const bool klu) {
-      parameters.type = "direct";
+      parameters.type = LinearSolverType::direct;
       for (const std::string direct : {"Amesos_Klu", "Amesos_Mumps"})
         if (klu || direct == "Amesos_Mumps")
           {
-            parameters.direct_solver = direct;
+            parameters.direct_solver = from_name(direct_solver_names(), direct);
             check(label + "direct " + direct, 0);
           }
       const bool has_s = d.dofs_per_block[Block::phase_field] > 0;
@@ -233,8 +233,9 @@ namespace
           if ((type == "gmres-amg" || (s == "amg" && (full || !has_s))) &&
               (has_s || s == "amg"))
             {
-              parameters.type                       = type;
-              parameters.phase_field_preconditioner = s;
+              parameters.type = from_name(linear_solver_type_names(), type);
+              parameters.phase_field_preconditioner =
+                from_name(phase_field_preconditioner_names(), s);
               check(label + type + (has_s ? ", s by " + s : ""), bound);
             }
     };
@@ -247,8 +248,8 @@ namespace
 
     // New values, same pattern: the monolithic copy must follow the values.
     assemble(d, d.hanging_node_constraints, 2., K);
-    parameters.type          = "direct";
-    parameters.direct_solver = "Amesos_Mumps";
+    parameters.type          = LinearSolverType::direct;
+    parameters.direct_solver = DirectSolver::mumps;
     check("direct after a change of values", 0);
     solver.setup();
     check("direct after setup()", 0);

@@ -42,13 +42,14 @@ main(int argc, char **argv)
       for (unsigned int r = first; r < first + 3; ++r)
         {
           MeshParameters parameters;
-          parameters.scene                        = "round bar";
+          parameters.scene                        = SceneType::round_bar;
           parameters.round_bar.radius             = R;
           parameters.round_bar.length             = L;
           parameters.round_bar.imperfection       = e;
           parameters.round_bar.axial_subdivisions = 4;
           parameters.round_bar.refinements        = r;
-          parameters.round_bar.model              = model;
+          parameters.round_bar.model =
+            from_name(round_bar_model_names(), model);
           parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
           create_scene_mesh(parameters, tria);
 

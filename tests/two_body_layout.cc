@@ -28,7 +28,7 @@ main(int argc, char **argv)
   std::ofstream                    out  = Testing::open_output();
 
   MeshParameters mesh;
-  mesh.scene = "two bodies";
+  mesh.scene = SceneType::two_bodies;
   parallel::distributed::Triangulation<dim> tria(comm);
   create_scene_mesh(mesh, tria);
 

@@ -88,7 +88,8 @@ namespace DuctileContact
     if (in_mesh != listed)
       throw InputError("Bodies/Material ids",
                        join(listed),
-                       "the mesh of scene '" + parameters.mesh.scene +
+                       "the mesh of scene '" +
+                         name_of(scene_names(), parameters.mesh.scene) +
                          "' has the material ids " + join(in_mesh) +
                          "; list exactly these, each with a subsection "
                          "'Body <id>'");
@@ -100,7 +101,8 @@ namespace DuctileContact
       check_input(boundaries.count(bc.boundary_id) > 0,
                   "Boundary conditions/Boundary ids",
                   Utilities::to_string(bc.boundary_id),
-                  "the mesh of scene '" + parameters.mesh.scene +
+                  "the mesh of scene '" +
+                    name_of(scene_names(), parameters.mesh.scene) +
                     "' has no boundary with this id (it has " +
                     join(boundaries) + ")");
     for (const ContactPairParameters &c : parameters.contact_pairs)
@@ -111,8 +113,8 @@ namespace DuctileContact
                     c.subsection() + "/" + entry,
                     Utilities::to_string(id),
                     "the id of a boundary of the mesh of scene '" +
-                      parameters.mesh.scene + "' (it has " + join(boundaries) +
-                      ")");
+                      name_of(scene_names(), parameters.mesh.scene) +
+                      "' (it has " + join(boundaries) + ")");
     ProbePoints::check_inside(tria, parameters.output.probe_points);
     if (!parameters.contact_pairs.empty())
       check_input(parameters.fe_degree == 2,

@@ -110,7 +110,7 @@ namespace DuctileContact
                                        *assembler,
                                        parameters.boundary_conditions,
                                        parameters.coupling,
-                                       parameters.linear_solver.direct_solver,
+                                       parameters.linear_solver.amesos_name(),
                                        force_scale,
                                        verbose_out,
                                        timer,
@@ -468,7 +468,7 @@ namespace DuctileContact
       {
         const double dt_try = controller.next_increment(t);
         const TrilinosWrappers::MPI::BlockVector u_old = u;
-        if (ls.predictor == "linear" && last_dt > 0.)
+        if (ls.predictor == Predictor::linear && last_dt > 0.)
           u.add(dt_try / last_dt, last_increment);
         const StepData   step_data{t + dt_try, dt_try, &old_solution, &history};
         const StepReport report = solver->solve_step(step_data, u);
@@ -511,10 +511,11 @@ namespace DuctileContact
         p.rate              = report.convergence_rate;
         if (has_block(Block::phase_field))
           {
-            p.max_s        = max_phase_field;
-            p.alternations = parameters.coupling.strategy != "monolithic"
-                               ? report.staggered_iterations
-                               : 0;
+            p.max_s = max_phase_field;
+            p.alternations =
+              parameters.coupling.strategy != CouplingStrategy::monolithic
+                ? report.staggered_iterations
+                : 0;
           }
         p.min_J   = report.info.min_J;
         p.elapsed = MPI_Wtime() - wall_start;

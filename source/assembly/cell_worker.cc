@@ -178,7 +178,117 @@ namespace DuctileContact
                     elastic_energy(F_n, C_n, s, plastic) -
                     elastic_energy(F_n, m.updated.Cp_inv, s, plastic));
     }
+
+    /// The squared magnitudes and scales of the cell's rows by block.
+    void
+    reduce_rows(const LocalRows   &rows,
+                const LocalDofs   &dofs,
+                AssemblyReduction &sums)
+    {
+      for (const unsigned int i : dofs.u)
+        sums.magnitude_squared[Block::displacement] +=
+          rows.magnitude(i) * rows.magnitude(i);
+      for (const unsigned int i : dofs.alpha)
+        sums.magnitude_squared[Block::hardening] +=
+          rows.magnitude(i) * rows.magnitude(i);
+      for (const unsigned int i : dofs.s)
+        sums.magnitude_squared[Block::phase_field] +=
+          rows.magnitude(i) * rows.magnitude(i);
+      sums.scale_squared[Block::hardening] += rows.scale_alpha.norm_sqr();
+      sums.scale_squared[Block::phase_field] += rows.scale_s.norm_sqr();
+    }
   } // namespace
+
+
+
+  void
+  SystemAssembler::hardening_point(const PointResponse        &m,
+                                   const BodyParameters       &body,
+                                   const PlasticityParameters &plastic,
+                                   const Tensor<2, dim>       &F,
+                                   const unsigned int          q,
+                                   const bool                  committing,
+                                   const CellScratch          &scratch,
+                                   const LocalDofs            &dofs,
+                                   const double                JxW,
+                                   const bool                  tangent,
+                                   LocalRows                  &rows,
+                                   AssemblyReduction          &sums) const
+  {
+    const PointHistory &history = *scratch.history_n[q];
+    const double        l_p     = body.plastic_length_scale;
+    // The gradient term acts at every point, not only where chi_p = 1 (see
+    // plastic_update()).
+    const double gradient_coefficient = plastic.initial_yield * l_p * l_p;
+    const double alpha                = scratch.alpha[q];
+    sums.max_alpha                    = std::max(sums.max_alpha, alpha);
+    if (m.yielding)
+      sums.min_yielding_alpha_increment =
+        std::min(sums.min_yielding_alpha_increment,
+                 alpha - history.plastic.alpha);
+    sums.hardening_energy +=
+      (integrated_hardening(alpha, plastic) +
+       0.5 * gradient_coefficient * scratch.grad_alpha[q].norm_square()) *
+      JxW;
+    if (committing)
+      sums.plastic_work_increment +=
+        plastic_work(
+          F, scratch.grad_u_old[q], m, history.plastic, scratch.s[q], plastic) *
+        JxW;
+    add_hardening_rows(m,
+                       plastic,
+                       gradient_coefficient,
+                       scratch.grad_alpha[q],
+                       scratch.shapes,
+                       dofs,
+                       JxW,
+                       tangent,
+                       rows);
+  }
+
+
+
+  double
+  SystemAssembler::phase_field_point(const PointResponse         &m,
+                                     const BodyParameters        &body,
+                                     const DegradationParameters &degradation,
+                                     const unsigned int           q,
+                                     PointHistory                *history_new,
+                                     const CellScratch           &scratch,
+                                     const LocalDofs             &dofs,
+                                     const double                 dt,
+                                     const double                 JxW,
+                                     const AssemblyTargets       *targets,
+                                     const unsigned int           cell_index,
+                                     LocalRows                   &rows,
+                                     AssemblyReduction           &sums) const
+  {
+    const double psi_max =
+      crack_history ? scratch.history_n[q]->psi_plus_max : 0.;
+    const CrackDriver driver = crack_driver(
+      m, psi_max, scratch.s[q], degradation, targets, cell_index, q, sums);
+    const double ds   = scratch.s[q] - scratch.s_old[q];
+    const double rate = ds / dt;
+    sums.fracture_viscous_work_increment +=
+      body.crack.viscosity * rate * rate * dt * JxW;
+    if (history_new)
+      {
+        history_new[q].psi_plus_max = driver.psi_H;
+        sums.history_work_increment +=
+          -driver.g1 * (driver.psi_H - m.psi_plus) * ds * JxW;
+      }
+    add_phase_field_rows(m,
+                         driver,
+                         body,
+                         rate,
+                         dt,
+                         scratch.shapes,
+                         dofs,
+                         JxW,
+                         targets && targets->tangent,
+                         rows);
+    return -driver.g1 * driver.psi_H * JxW;
+  }
 
 
 
@@ -269,76 +379,72 @@ namespace DuctileContact
         vm += von_mises(m.tau) * JxW;
         mean += trace(m.tau) / 3. * JxW;
         mean_J += m.J * JxW;
+        if (pass.averages)
+          {
+            // Only the cell averages: the crack driver, no rows.
+            if (has_s)
+              {
+                const double psi_max =
+                  crack_history ? scratch.history_n[q]->psi_plus_max : 0.;
+                const CrackDriver d = crack_driver(m,
+                                                   psi_max,
+                                                   scratch.s[q],
+                                                   degradation,
+                                                   nullptr,
+                                                   index,
+                                                   q,
+                                                   sums);
+                driver_sum += -d.g1 * d.psi_H * JxW;
+              }
+            continue;
+          }
 
         scratch.shapes.reinit(fe_values, q, dofs);
         add_displacement_rows(
           m, body, scratch.shapes, dofs, JxW, tangent, rows);
 
         if (has_alpha)
-          {
-            const double l_p = body.plastic_length_scale;
-            // The gradient term acts at every point, not only where chi_p
-            // = 1 (see plastic_update()).
-            const double gradient_coefficient =
-              plastic.initial_yield * l_p * l_p;
-            const double alpha = scratch.alpha[q];
-            sums.max_alpha     = std::max(sums.max_alpha, alpha);
-            if (m.yielding)
-              sums.min_yielding_alpha_increment =
-                std::min(sums.min_yielding_alpha_increment,
-                         alpha - history.plastic.alpha);
-            sums.hardening_energy += (integrated_hardening(alpha, plastic) +
-                                      0.5 * gradient_coefficient *
-                                        scratch.grad_alpha[q].norm_square()) *
-                                     JxW;
-            if (history_new)
-              sums.plastic_work_increment += plastic_work(F,
-                                                          scratch.grad_u_old[q],
-                                                          m,
-                                                          history.plastic,
-                                                          scratch.s[q],
-                                                          plastic) *
-                                             JxW;
-            add_hardening_rows(m,
-                               plastic,
-                               gradient_coefficient,
-                               scratch.grad_alpha[q],
-                               scratch.shapes,
-                               dofs,
-                               JxW,
-                               tangent,
-                               rows);
-          }
-
+          hardening_point(m,
+                          body,
+                          plastic,
+                          F,
+                          q,
+                          history_new != nullptr,
+                          scratch,
+                          dofs,
+                          JxW,
+                          tangent,
+                          rows,
+                          sums);
         if (has_s)
-          {
-            const double psi_max = crack_history ? history.psi_plus_max : 0.;
-            const CrackDriver driver = crack_driver(
-              m, psi_max, scratch.s[q], degradation, targets, index, q, sums);
-            const double ds   = scratch.s[q] - scratch.s_old[q];
-            const double rate = ds / step.dt;
-            driver_sum += -driver.g1 * driver.psi_H * JxW;
-            sums.fracture_viscous_work_increment +=
-              body.crack.viscosity * rate * rate * step.dt * JxW;
-            if (history_new)
-              {
-                history_new[q].psi_plus_max = driver.psi_H;
-                sums.history_work_increment +=
-                  -driver.g1 * (driver.psi_H - m.psi_plus) * ds * JxW;
-              }
-            add_phase_field_rows(m,
-                                 driver,
-                                 body,
-                                 rate,
-                                 step.dt,
-                                 scratch.shapes,
-                                 dofs,
-                                 JxW,
-                                 tangent,
-                                 rows);
-          }
+          driver_sum += phase_field_point(m,
+                                          body,
+                                          degradation,
+                                          q,
+                                          history_new,
+                                          scratch,
+                                          dofs,
+                                          step.dt,
+                                          JxW,
+                                          targets,
+                                          index,
+                                          rows,
+                                          sums);
         if (history_new && has_alpha)
           history_new[q].plastic = m.updated;
+      }
+
+    if (pass.averages)
+      {
+        if (volume > 0.)
+          {
+            copy.has_averages        = true;
+            copy.von_mises           = vm / volume;
+            copy.mean_stress         = mean / volume;
+            copy.mean_J              = mean_J / volume;
+            copy.crack_driving_force = driver_sum / volume;
+          }
+        return;
       }
 
     if (has_s)
@@ -355,25 +461,7 @@ namespace DuctileContact
                                                           rows);
       }
 
-    for (const unsigned int i : dofs.u)
-      sums.magnitude_squared[Block::displacement] +=
-        rows.magnitude(i) * rows.magnitude(i);
-    for (const unsigned int i : dofs.alpha)
-      sums.magnitude_squared[Block::hardening] +=
-        rows.magnitude(i) * rows.magnitude(i);
-    for (const unsigned int i : dofs.s)
-      sums.magnitude_squared[Block::phase_field] +=
-        rows.magnitude(i) * rows.magnitude(i);
-    sums.scale_squared[Block::hardening] += rows.scale_alpha.norm_sqr();
-    sums.scale_squared[Block::phase_field] += rows.scale_s.norm_sqr();
-    if (pass.averages && volume > 0.)
-      {
-        copy.has_averages        = true;
-        copy.von_mises           = vm / volume;
-        copy.mean_stress         = mean / volume;
-        copy.mean_J              = mean_J / volume;
-        copy.crack_driving_force = driver_sum / volume;
-      }
+    reduce_rows(rows, dofs, sums);
 
     // R = f_int - f_ext; the Newton right-hand side is -R.
     for (unsigned int i = 0; i < rows.rhs.size(); ++i)
@@ -444,8 +532,9 @@ namespace DuctileContact
 
         // Only the s DoFs carry face terms: keep the matrix to them, the
         // sparsity pattern couples nothing else across faces.
-        const auto                indices = fiv.get_interface_dof_indices();
-        std::vector<unsigned int> s_local;
+        const auto                 indices = fiv.get_interface_dof_indices();
+        std::vector<unsigned int> &s_local = scratch.face_s_dofs;
+        s_local.clear();
         for (unsigned int i = 0; i < n; ++i)
           if (indices[i] >= first_s)
             s_local.push_back(i);
@@ -454,7 +543,8 @@ namespace DuctileContact
           copy.faces.emplace_back();
         LocalRows &face = copy.faces[copy.n_faces++];
         face.reinit(m);
-        Vector<double> s_values(m);
+        Vector<double> &s_values = scratch.face_s_values;
+        s_values.reinit(m);
         for (unsigned int k = 0; k < m; ++k)
           {
             face.indices[k] = indices[s_local[k]];

@@ -1,3 +1,4 @@
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_interface_values.h>
 #include <deal.II/fe/fe_values.h>
@@ -149,14 +150,26 @@ namespace DuctileContact
           quantities->crack_driving_force[i] = copy.crack_driving_force;
         }
     };
-    const auto &dof_handler = discretisation.dof_handler;
-    WorkStream::run(
-      Iterator(IteratorFilters::LocallyOwnedCell(), dof_handler.begin_active()),
-      Iterator(IteratorFilters::LocallyOwnedCell(), dof_handler.end()),
-      worker,
-      copier,
-      CellScratch(discretisation),
-      CellCopy());
+    const auto    &dof_handler = discretisation.dof_handler;
+    const Iterator begin(IteratorFilters::LocallyOwnedCell(),
+                         dof_handler.begin_active());
+    const Iterator end(IteratorFilters::LocallyOwnedCell(), dof_handler.end());
+    if (!scratch)
+      scratch = std::make_unique<CellScratch>(discretisation);
+    if (MultithreadInfo::n_threads() == 1)
+      {
+        // The cached scratch directly: a copy would build the evaluation
+        // objects again.
+        if (!copy_data)
+          copy_data = std::make_unique<CellCopy>();
+        for (Iterator cell = begin; cell != end; ++cell)
+          {
+            worker(cell, *scratch, *copy_data);
+            copier(*copy_data);
+          }
+      }
+    else
+      WorkStream::run(begin, end, worker, copier, *scratch, CellCopy());
     return sums.sum_over_ranks(dof_handler.get_communicator());
   }
 } // namespace DuctileContact

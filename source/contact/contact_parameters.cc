@@ -60,15 +60,16 @@ namespace DuctileContact
                       "end of a load step, relative to the smallest slave "
                       "face size [-].",
                       Patterns::Double(0.));
-    prm.add_parameter(
+    add_option(
+      prm,
       "Multiplier basis",
       multiplier_basis,
+      multiplier_basis_names(),
       "Basis Phi_j of the contact pressure on the slave faces: dual "
       "(biorthogonal to the quad9 shape functions, Wohlmuth; the nodal "
       "pressures are point values of the pressure field) or standard "
       "(Phi_j = N_j; the nodal coefficients of quadratic faces oscillate "
-      "between vertex and mid-side nodes where the pressure varies).",
-      Patterns::Selection("dual|standard"));
+      "between vertex and mid-side nodes where the pressure varies).");
     prm.add_parameter("Maximum augmentations",
                       max_augmentations,
                       "Multiplier (Uzawa) updates per load step before the "

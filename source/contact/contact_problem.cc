@@ -83,11 +83,11 @@ namespace DuctileContact
         };
         const double E =
           std::min(youngs_modulus(pair.slave), youngs_modulus(pair.master));
-        const double h              = pair.slave.smallest_face_size();
-        pair.index                  = p;
-        pair.dual                   = prm.multiplier_basis == "dual";
-        pair.law.penalty            = prm.penalty_factor * E / h;
-        pair.law.friction           = prm.friction_coefficient;
+        const double h    = pair.slave.smallest_face_size();
+        pair.index        = p;
+        pair.dual         = prm.multiplier_basis == MultiplierBasis::dual;
+        pair.law.penalty  = prm.penalty_factor * E / h;
+        pair.law.friction = prm.friction_coefficient;
         pair.law.tangential_penalty = prm.tangential_penalty_factor * E / h;
         // Active also when just touching (a gap at round-off level): then
         // the tangent holds the contact stiffness of a closed interface, so

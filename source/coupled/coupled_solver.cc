@@ -106,7 +106,8 @@ namespace DuctileContact
   CoupledSolver::solve_fields(TrilinosWrappers::MPI::BlockVector &u)
   {
     const std::array<bool, Block::n_blocks> none{{false, false, false}};
-    if (coupling.strategy == "monolithic" || !problem.has_phase_field())
+    if (coupling.strategy == CouplingStrategy::monolithic ||
+        !problem.has_phase_field())
       {
         StepReport report = as_step_report(newton_solve(u, none));
         report.info       = problem.converged_info();
@@ -114,7 +115,7 @@ namespace DuctileContact
       }
 
     StepReport total;
-    if (coupling.strategy == "monolithic-staggered")
+    if (coupling.strategy == CouplingStrategy::monolithic_staggered)
       {
         const TrilinosWrappers::MPI::BlockVector start = u;
         const NewtonReport                       r     = newton_solve(u, none);

@@ -8,9 +8,11 @@ namespace DuctileContact
   CouplingParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Coupling");
-    prm.add_parameter(
+    add_option(
+      prm,
       "Strategy",
       strategy,
+      coupling_strategy_names(),
       "How the displacement/hardening fields and the phase field are solved "
       "together: monolithic (Newton with the exact coupled tangent), "
       "staggered (alternate minimisation iterated to the Newton tolerances "
@@ -18,8 +20,7 @@ namespace DuctileContact
       "it fails is redone staggered before the step is cut back: past a "
       "limit point, e.g. when a crack runs unstably, there is no nearby "
       "equilibrium for Newton to find, while the alternation walks to the "
-      "cracked state).",
-      Patterns::Selection("monolithic|staggered|monolithic-staggered"));
+      "cracked state).");
     prm.add_parameter("Maximum staggered iterations",
                       max_staggered_iterations,
                       "Alternations per load step before the step is cut "
@@ -34,9 +35,11 @@ namespace DuctileContact
       "alternation (m = this depth; 0 = plain alternate minimisation). The "
       "converged state is the same; it only takes fewer alternations.",
       Patterns::Integer(0, 50));
-    prm.add_parameter(
+    add_option(
+      prm,
       "Irreversibility",
       irreversibility,
+      irreversibility_names(),
       "How the crack is kept from healing (model.md section 2). history: the "
       "crack driver uses the largest psi^+ a point has had (Miehe's history "
       "field); this keeps the driving force from falling but does not by "
@@ -46,8 +49,7 @@ namespace DuctileContact
       "inside Newton's method (engaged when a converged state violates it; "
       "the rows of the DoFs on the bound carry the bound, their residual is "
       "the bound's reaction and must be >= 0), with the driver from the "
-      "current psi^+. history and bound: both.",
-      Patterns::Selection("history|bound|history and bound"));
+      "current psi^+. history and bound: both.");
     prm.leave_subsection();
   }
 

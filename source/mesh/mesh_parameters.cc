@@ -13,9 +13,11 @@ namespace DuctileContact
   MeshParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
-    prm.add_parameter(
+    add_option(
+      prm,
       "Scene",
       scene,
+      scene_names(),
       "Which coarse mesh to build. 'box': one body, a brick given in "
       "subsection Box, boundary ids 0..5 on the faces x-, x+, y-, y+, z-, z+. "
       "'two bodies': the plate and block of the paper's scene (model.md "
@@ -23,8 +25,7 @@ namespace DuctileContact
       "necking bar of validation rung 3, see subsection Round bar. 'gmsh': "
       "a mesh "
       "read from a Gmsh .msh file; physical volume tags become material ids "
-      "(bodies), physical surface tags become boundary ids.",
-      Patterns::Selection("box|two bodies|round bar|gmsh"));
+      "(bodies), physical surface tags become boundary ids.");
     prm.add_parameter("Global refinements",
                       global_refinements,
                       "Number of uniform refinements of the coarse mesh.",
@@ -113,17 +114,18 @@ namespace DuctileContact
                       "Mesh/Global refinements and refinement boxes), and "
                       "the cells are curved to the element degree.",
                       Patterns::Integer(0, 5));
-    prm.add_parameter(
+    add_option(
+      prm,
       "Model",
       round_bar.model,
+      round_bar_model_names(),
       "'full': the whole bar, boundary ids 0 = hull, 1 = end x = 0, 2 = end "
       "x = L. 'octant': the eighth x >= L/2, y >= 0, z >= 0 (needs "
       "Refinements >= 1; the cells are those of the full bar), boundary ids "
       "0 = hull, 2 = end x = L, 3 = plane x = L/2, 4 = plane y = 0, 5 = "
       "plane z = 0: with symmetry conditions on 3, 4, 5 it is the full bar "
       "pulled at both ends by twice the end displacement, carrying 4 times "
-      "the end force, without the stress singularity of clamped ends.",
-      Patterns::Selection("full|octant"));
+      "the end force, without the stress singularity of clamped ends.");
     prm.leave_subsection();
 
     prm.enter_subsection("Gmsh");
@@ -207,7 +209,7 @@ namespace DuctileContact
         refinement_boxes.push_back(b);
       }
 
-    if (scene == "box")
+    if (scene == SceneType::box)
       for (unsigned int d = 0; d < dim; ++d)
         check_input(box.lower_corner[d] < box.upper_corner[d],
                     "Mesh/Box/Upper corner",
@@ -216,7 +218,7 @@ namespace DuctileContact
                       Utilities::to_string(box.lower_corner[d]) +
                       ") in every coordinate");
 
-    if (scene == "two bodies")
+    if (scene == SceneType::two_bodies)
       {
         for (unsigned int d = 0; d < dim; ++d)
           check_input(two_bodies.plate_size[d] > 0.,
@@ -229,21 +231,22 @@ namespace DuctileContact
                     "the block edge must be positive");
       }
 
-    if (scene == "round bar")
+    if (scene == SceneType::round_bar)
       {
         check_input(round_bar.radius > 0. && round_bar.length > 0.,
                     "Mesh/Round bar/Radius",
                     Utilities::to_string(round_bar.radius) + " (Length " +
                       Utilities::to_string(round_bar.length) + ")",
                     "radius and length must be positive");
-        check_input(round_bar.model == "full" || round_bar.refinements >= 1,
+        check_input(round_bar.model == RoundBarModel::full ||
+                      round_bar.refinements >= 1,
                     "Mesh/Round bar/Refinements",
                     Utilities::to_string(round_bar.refinements),
                     "Model = octant needs at least 1 (the coarse cylinder's "
                     "cells straddle the symmetry planes)");
       }
 
-    if (scene == "gmsh")
+    if (scene == SceneType::gmsh)
       {
         check_input(!gmsh.file_name.empty(),
                     "Mesh/Gmsh/File name",

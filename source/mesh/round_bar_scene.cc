@@ -136,7 +136,7 @@ namespace DuctileContact
     set_manifold_ids(coarse);
     unsigned int refinements = parameters.refinements;
 
-    if (parameters.model == "octant")
+    if (parameters.model == RoundBarModel::octant)
       {
         // One refinement on the curved geometry puts every cell into one
         // octant; those of x >= L/2, y >= 0, z >= 0 become the coarse mesh.

@@ -38,18 +38,21 @@ namespace DuctileContact
   create_scene_mesh(const MeshParameters                      &parameters,
                     parallel::distributed::Triangulation<dim> &tria)
   {
-    if (parameters.scene == "box")
-      create_box_scene(parameters.box, tria);
-    else if (parameters.scene == "two bodies")
-      create_two_body_scene(parameters.two_bodies, tria);
-    else if (parameters.scene == "round bar")
-      create_round_bar_scene(parameters.round_bar, tria);
-    else if (parameters.scene == "gmsh")
-      create_gmsh_scene(parameters.gmsh, tria);
-    else
-      throw InputError("Mesh/Scene",
-                       parameters.scene,
-                       "allowed are: box, two bodies, round bar, gmsh");
+    switch (parameters.scene)
+      {
+      case SceneType::box:
+        create_box_scene(parameters.box, tria);
+        break;
+      case SceneType::two_bodies:
+        create_two_body_scene(parameters.two_bodies, tria);
+        break;
+      case SceneType::round_bar:
+        create_round_bar_scene(parameters.round_bar, tria);
+        break;
+      case SceneType::gmsh:
+        create_gmsh_scene(parameters.gmsh, tria);
+        break;
+      }
 
     tria.refine_global(parameters.global_refinements);
     refine_boxes(parameters, tria);

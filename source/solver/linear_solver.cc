@@ -93,7 +93,7 @@ namespace DuctileContact
     if (discretisation.dofs_per_block[Block::hardening] == 0 &&
         discretisation.dofs_per_block[Block::phase_field] == 0)
       return solve_displacement(K, x, b);
-    if (parameters.type == "direct")
+    if (parameters.type == LinearSolverType::direct)
       return solve_coupled_direct(K, x, b);
     // cg-amg too: the coupled tangent is not symmetric (documented with the
     // parameter).
@@ -132,11 +132,11 @@ namespace DuctileContact
     auto       &xu = x.block(Block::displacement);
     const auto &bu = b.block(Block::displacement);
 
-    if (parameters.type == "direct")
+    if (parameters.type == LinearSolverType::direct)
       {
         SolverControl                                  control(1, 0.);
         TrilinosWrappers::SolverDirect::AdditionalData data(
-          false, parameters.direct_solver);
+          false, parameters.amesos_name());
         TrilinosWrappers::SolverDirect direct(control, data);
         direct.solve(A, xu, bu);
         return 1;
@@ -147,7 +147,7 @@ namespace DuctileContact
 
     SolverControl control(parameters.max_iterations,
                           parameters.relative_tolerance * bu.l2_norm());
-    if (parameters.type == "cg-amg")
+    if (parameters.type == LinearSolverType::cg_amg)
       {
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
         cg.solve(A, xu, bu, amg);
@@ -364,7 +364,7 @@ namespace DuctileContact
 
     SolverControl                                  control(1, 0.);
     TrilinosWrappers::SolverDirect::AdditionalData data(
-      false, parameters.direct_solver);
+      false, parameters.amesos_name());
     TrilinosWrappers::SolverDirect direct(control, data);
     direct.solve(m.matrix, m.x, m.b);
 
@@ -429,11 +429,12 @@ namespace DuctileContact
     TrilinosWrappers::SolverDirect    direct_s(
       direct_control,
       TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                     parameters.direct_solver));
+                                                     parameters.amesos_name()));
     if (discretisation.dofs_per_block[Block::phase_field] > 0)
       {
         const auto &A = K.block(Block::phase_field, Block::phase_field);
-        if (parameters.phase_field_preconditioner == "direct")
+        if (parameters.phase_field_preconditioner ==
+            PhaseFieldPreconditioner::direct)
           {
             direct_s.initialize(A);
             inverses[Block::phase_field] = [&](auto &y, const auto &r) {

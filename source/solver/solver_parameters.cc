@@ -45,9 +45,11 @@ namespace DuctileContact
       "otherwise keep the small increment to the end. A step that then "
       "fails is cut back as usual. 0: only easy steps grow the increment.",
       Patterns::Integer(0));
-    prm.add_parameter(
+    add_option(
+      prm,
       "Predictor",
       predictor,
+      predictor_names(),
       "First guess of every unknown (u, alpha, s) at the start of a step. "
       "'constant': the last converged state (Newton's first iteration then "
       "applies the new boundary data with the tangent of that state; in a "
@@ -55,8 +57,7 @@ namespace DuctileContact
       "overshoot the yield stress by a whole step's strain). 'linear': the "
       "last converged state plus the last step's increment scaled by the "
       "ratio of the step sizes (from the second step on; for monotonic "
-      "loading the first residual is then of second order in the step).",
-      Patterns::Selection("constant|linear"));
+      "loading the first residual is then of second order in the step).");
     prm.leave_subsection();
   }
 
@@ -149,21 +150,23 @@ namespace DuctileContact
   LinearSolverParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    prm.add_parameter(
+    add_option(
+      prm,
       "Type",
       type,
+      linear_solver_type_names(),
       "direct: sparse LU (Trilinos Amesos, see Direct solver) of the whole "
       "system; cg-amg: CG preconditioned by Trilinos ML AMG with the six "
       "rigid-body modes; gmres-amg: GMRES with the same AMG (for "
       "non-symmetric tangents). With alpha or s unknowns the coupled tangent "
       "is not symmetric: cg-amg and gmres-amg then both run GMRES with a "
       "block lower-triangular (block Gauss-Seidel) preconditioner: this AMG "
-      "on u, a scalar AMG on alpha, and on s the Phase-field preconditioner.",
-      Patterns::Selection("direct|cg-amg|gmres-amg"));
-    prm.add_parameter("Direct solver",
-                      direct_solver,
-                      "Amesos package used by Type = direct.",
-                      Patterns::Selection("Amesos_Klu|Amesos_Mumps"));
+      "on u, a scalar AMG on alpha, and on s the Phase-field preconditioner.");
+    add_option(prm,
+               "Direct solver",
+               direct_solver,
+               direct_solver_names(),
+               "Amesos package used by Type = direct.");
     prm.add_parameter("Relative tolerance",
                       relative_tolerance,
                       "Iterative solvers stop when the residual is below "
@@ -184,14 +187,15 @@ namespace DuctileContact
                       smoother_sweeps,
                       "Chebyshev smoother sweeps per AMG level.",
                       Patterns::Integer(1, 10));
-    prm.add_parameter(
+    add_option(
+      prm,
       "Phase-field preconditioner",
       phase_field_preconditioner,
+      phase_field_preconditioner_names(),
       "Iterative types with s unknowns: how the s-s diagonal block is "
       "inverted inside the block preconditioner. amg: one ML AMG V-cycle "
       "(its iterations grow with l_f/h); direct: a sparse LU of that block "
-      "with the Direct solver package, factorised once per linear solve.",
-      Patterns::Selection("amg|direct"));
+      "with the Direct solver package, factorised once per linear solve.");
     prm.leave_subsection();
   }
 
@@ -200,7 +204,7 @@ namespace DuctileContact
   void
   LinearSolverParameters::check() const
   {
-    check_input(type == "direct" || relative_tolerance > 0.,
+    check_input(type == LinearSolverType::direct || relative_tolerance > 0.,
                 "Linear solver/Relative tolerance",
                 Utilities::to_string(relative_tolerance),
                 "an iterative solver needs a positive tolerance");

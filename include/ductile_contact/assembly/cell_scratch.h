@@ -73,6 +73,10 @@ namespace DuctileContact
     dealii::Vector<double>              cell_values;
     PointShapes                         shapes;
     dealii::FullMatrix<double>          c0ip_matrix, face_matrix;
+    /// Of the face being assembled: its s DoFs (interface numbering) and
+    /// their values.
+    std::vector<unsigned int> face_s_dofs;
+    dealii::Vector<double>    face_s_values;
   };
 
   /// What one cell adds: its rows, the rows of the C0IP faces it owns, its

@@ -7,10 +7,13 @@
 #include <ductile_contact/assembly/quadrature_history.h>
 #include <ductile_contact/discretisation/boundary_condition.h>
 #include <ductile_contact/discretisation/discretisation.h>
+#include <ductile_contact/materials/body_material.h>
 #include <ductile_contact/materials/body_parameters.h>
+#include <ductile_contact/materials/degradation.h>
 
 #include <deque>
 #include <map>
+#include <memory>
 
 namespace DuctileContact
 {
@@ -95,6 +98,40 @@ namespace DuctileContact
                 CellCopy                                            &copy,
                 const Pass &pass) const;
 
+    /// The hardening terms of point @p q: energy, extremes, plastic work
+    /// (when @p committing) and the rows of (50).
+    void
+    hardening_point(const PointResponse          &m,
+                    const BodyParameters         &body,
+                    const PlasticityParameters   &plastic,
+                    const dealii::Tensor<2, dim> &F,
+                    const unsigned int            q,
+                    const bool                    committing,
+                    const CellScratch            &scratch,
+                    const LocalDofs              &dofs,
+                    const double                  JxW,
+                    const bool                    tangent,
+                    LocalRows                    &rows,
+                    AssemblyReduction            &sums) const;
+
+    /// The phase-field terms of point @p q: the crack driver with its
+    /// branch, viscous work, the history (into @p history_new if not null)
+    /// and the rows of (51); returns the driver -g_k' psi^+_H JxW.
+    double
+    phase_field_point(const PointResponse         &m,
+                      const BodyParameters        &body,
+                      const DegradationParameters &degradation,
+                      const unsigned int           q,
+                      PointHistory                *history_new,
+                      const CellScratch           &scratch,
+                      const LocalDofs             &dofs,
+                      const double                 dt,
+                      const double                 JxW,
+                      const AssemblyTargets       *targets,
+                      const unsigned int           cell_index,
+                      LocalRows                   &rows,
+                      AssemblyReduction           &sums) const;
+
     /// The rows of the nominal tractions T on the boundary faces of @p cell.
     void
     add_traction_rows(const dealii::DoFHandler<dim>::active_cell_iterator &cell,
@@ -116,6 +153,13 @@ namespace DuctileContact
     /// Whether the crack driver keeps the history maximum of psi^+
     /// (Coupling/Irreversibility other than `bound`).
     const bool crack_history;
+    /// The evaluation objects and local rows of the cell loop, built on
+    /// the first pass and kept: the shape data of FEInterfaceValues on all
+    /// subfaces with hessians cost more to set up than an assembly of a
+    /// small mesh. A cache, not state: every pass overwrites what it uses.
+    /// With more than one thread WorkStream copies the scratch per thread.
+    mutable std::unique_ptr<CellScratch> scratch;
+    mutable std::unique_ptr<CellCopy>    copy_data;
     /// Traction boundaries, looked up per face.
     std::map<dealii::types::boundary_id, const BoundaryCondition *> tractions;
   };

@@ -3,10 +3,28 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <ductile_contact/core/option.h>
+
 #include <string>
 
 namespace DuctileContact
 {
+  /// Contact pair/Multiplier basis on the slave faces.
+  enum class MultiplierBasis
+  {
+    dual,
+    standard
+  };
+
+  inline const NameTable<MultiplierBasis> &
+  multiplier_basis_names()
+  {
+    static const NameTable<MultiplierBasis> t{{MultiplierBasis::dual, "dual"},
+                                              {MultiplierBasis::standard,
+                                               "standard"}};
+    return t;
+  }
+
   /**
    * One contact pair, subsection `Contact pair <n>` (model.md section 5,
    * contact.md). The slave side carries the nodal contact pressures and the
@@ -38,9 +56,9 @@ namespace DuctileContact
     /// Largest allowed penetration, relative to the smallest slave face
     /// size.
     double penetration_tolerance = 1e-6;
-    /// Multiplier basis on the slave faces: "dual" (biorthogonal, D
-    /// diagonal) or "standard" (Phi_j = N_j).
-    std::string multiplier_basis = "dual";
+    /// Multiplier basis on the slave faces: dual (biorthogonal, D
+    /// diagonal) or standard (Phi_j = N_j).
+    MultiplierBasis multiplier_basis = MultiplierBasis::dual;
     /// Uzawa updates per load step before the step counts as failed.
     unsigned int max_augmentations = 30;
 

@@ -2,6 +2,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <ductile_contact/core/option.h>
+
 #include <string>
 
 namespace DuctileContact
@@ -26,26 +28,61 @@ namespace DuctileContact
    * phase-field DoF, PhaseFieldBound, with the driver from the current
    * psi^+) or `history and bound` (default: both).
    */
+  /// Coupling/Strategy.
+  enum class CouplingStrategy
+  {
+    monolithic,
+    staggered,
+    monolithic_staggered
+  };
+
+  inline const NameTable<CouplingStrategy> &
+  coupling_strategy_names()
+  {
+    static const NameTable<CouplingStrategy> t{
+      {CouplingStrategy::monolithic, "monolithic"},
+      {CouplingStrategy::staggered, "staggered"},
+      {CouplingStrategy::monolithic_staggered, "monolithic-staggered"}};
+    return t;
+  }
+
+  /// Coupling/Irreversibility.
+  enum class Irreversibility
+  {
+    history,
+    bound,
+    history_and_bound
+  };
+
+  inline const NameTable<Irreversibility> &
+  irreversibility_names()
+  {
+    static const NameTable<Irreversibility> t{
+      {Irreversibility::history, "history"},
+      {Irreversibility::bound, "bound"},
+      {Irreversibility::history_and_bound, "history and bound"}};
+    return t;
+  }
+
   struct CouplingParameters
   {
-    std::string  strategy                 = "monolithic";
-    unsigned int max_staggered_iterations = 200;
+    CouplingStrategy strategy                 = CouplingStrategy::monolithic;
+    unsigned int     max_staggered_iterations = 200;
     /// Anderson depth m for the staggered phase field (0: plain).
-    unsigned int acceleration_depth = 0;
-    /// "history", "bound" or "history and bound".
-    std::string irreversibility = "history and bound";
+    unsigned int    acceleration_depth = 0;
+    Irreversibility irreversibility    = Irreversibility::history_and_bound;
 
     /// Whether the crack driver keeps the history maximum of psi^+.
     bool
     crack_history() const
     {
-      return irreversibility != "bound";
+      return irreversibility != Irreversibility::bound;
     }
     /// Whether s >= s_n is enforced at the phase-field DoFs.
     bool
     phase_field_bound() const
     {
-      return irreversibility != "history";
+      return irreversibility != Irreversibility::history;
     }
 
     void

@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <ductile_contact/core/option.h>
 #include <ductile_contact/core/types.h>
 
 #include <string>
@@ -18,14 +19,47 @@ namespace DuctileContact
     unsigned int       levels = 0;
   };
 
+  /// Mesh/Scene: which builder makes the coarse mesh.
+  enum class SceneType
+  {
+    box,
+    two_bodies,
+    round_bar,
+    gmsh
+  };
+
+  inline const NameTable<SceneType> &
+  scene_names()
+  {
+    static const NameTable<SceneType> t{{SceneType::box, "box"},
+                                        {SceneType::two_bodies, "two bodies"},
+                                        {SceneType::round_bar, "round bar"},
+                                        {SceneType::gmsh, "gmsh"}};
+    return t;
+  }
+
+  /// Mesh/Round bar/Model.
+  enum class RoundBarModel
+  {
+    full,
+    octant
+  };
+
+  inline const NameTable<RoundBarModel> &
+  round_bar_model_names()
+  {
+    static const NameTable<RoundBarModel> t{{RoundBarModel::full, "full"},
+                                            {RoundBarModel::octant, "octant"}};
+    return t;
+  }
+
   /**
    * Parameters of subsection `Mesh`: which scene builds the coarse mesh and
    * how it is refined. All lengths are in metres.
    */
   struct MeshParameters
   {
-    /// box | two bodies | round bar | gmsh
-    std::string scene = "box";
+    SceneType scene = SceneType::box;
 
     unsigned int global_refinements = 0;
 
@@ -56,13 +90,12 @@ namespace DuctileContact
     /// Round bar of validation rung 3 (necking), axis along x.
     struct RoundBar
     {
-      double       radius             = 6.413e-3;
-      double       length             = 53.334e-3;
-      double       imperfection       = 0.018;
-      unsigned int axial_subdivisions = 10;
-      unsigned int refinements        = 1;
-      /// full | octant
-      std::string model = "full";
+      double        radius             = 6.413e-3;
+      double        length             = 53.334e-3;
+      double        imperfection       = 0.018;
+      unsigned int  axial_subdivisions = 10;
+      unsigned int  refinements        = 1;
+      RoundBarModel model              = RoundBarModel::full;
     } round_bar;
 
     struct Gmsh

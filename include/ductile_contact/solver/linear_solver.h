@@ -57,14 +57,6 @@ namespace DuctileContact
           dealii::TrilinosWrappers::MPI::BlockVector        &x,
           const dealii::TrilinosWrappers::MPI::BlockVector  &b);
 
-    /// The Amesos solver of `Linear solver/Direct solver`, for the sparse
-    /// LUs of single blocks elsewhere (PhaseFieldBound).
-    const std::string &
-    direct_solver() const
-    {
-      return parameters.direct_solver;
-    }
-
   private:
     /// The displacement block alone (alpha and s empty).
     unsigned int

@@ -2,6 +2,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <ductile_contact/core/option.h>
+
 #include <string>
 
 namespace DuctileContact
@@ -13,6 +15,21 @@ namespace DuctileContact
    * after a run of accepted steps at the same increment, the step grows
    * again, never beyond `Time step`.
    */
+  /// Load stepping/Predictor.
+  enum class Predictor
+  {
+    constant,
+    linear
+  };
+
+  inline const NameTable<Predictor> &
+  predictor_names()
+  {
+    static const NameTable<Predictor> t{{Predictor::constant, "constant"},
+                                        {Predictor::linear, "linear"}};
+    return t;
+  }
+
   struct LoadSteppingParameters
   {
     double       end_time          = 1.;
@@ -24,7 +41,7 @@ namespace DuctileContact
     /// if none was easy (0: never).
     unsigned int steps_before_growth = 4;
     /// constant | linear: first guess of a step (see declare()).
-    std::string predictor = "constant";
+    Predictor predictor = Predictor::constant;
 
     void
     declare(dealii::ParameterHandler &prm);
@@ -57,18 +74,75 @@ namespace DuctileContact
    * solve the coupled [u | alpha | s] system with GMRES and a block
    * lower-triangular preconditioner (see LinearSolver).
    */
+  /// Linear solver/Type.
+  enum class LinearSolverType
+  {
+    direct,
+    cg_amg,
+    gmres_amg
+  };
+
+  inline const NameTable<LinearSolverType> &
+  linear_solver_type_names()
+  {
+    static const NameTable<LinearSolverType> t{
+      {LinearSolverType::direct, "direct"},
+      {LinearSolverType::cg_amg, "cg-amg"},
+      {LinearSolverType::gmres_amg, "gmres-amg"}};
+    return t;
+  }
+
+  /// Linear solver/Direct solver: the Trilinos Amesos package (its name is
+  /// the one Amesos takes).
+  enum class DirectSolver
+  {
+    klu,
+    mumps
+  };
+
+  inline const NameTable<DirectSolver> &
+  direct_solver_names()
+  {
+    static const NameTable<DirectSolver> t{{DirectSolver::klu, "Amesos_Klu"},
+                                           {DirectSolver::mumps,
+                                            "Amesos_Mumps"}};
+    return t;
+  }
+
+  /// Linear solver/Phase-field preconditioner.
+  enum class PhaseFieldPreconditioner
+  {
+    amg,
+    direct
+  };
+
+  inline const NameTable<PhaseFieldPreconditioner> &
+  phase_field_preconditioner_names()
+  {
+    static const NameTable<PhaseFieldPreconditioner> t{
+      {PhaseFieldPreconditioner::amg, "amg"},
+      {PhaseFieldPreconditioner::direct, "direct"}};
+    return t;
+  }
+
   struct LinearSolverParameters
   {
-    /// direct | cg-amg | gmres-amg
-    std::string type = "direct";
-    /// Amesos_Klu | Amesos_Mumps
-    std::string  direct_solver         = "Amesos_Mumps";
-    double       relative_tolerance    = 1.e-8;
-    unsigned int max_iterations        = 2000;
-    double       aggregation_threshold = 1.e-4;
-    unsigned int smoother_sweeps       = 2;
+    LinearSolverType type                  = LinearSolverType::direct;
+    DirectSolver     direct_solver         = DirectSolver::mumps;
+    double           relative_tolerance    = 1.e-8;
+    unsigned int     max_iterations        = 2000;
+    double           aggregation_threshold = 1.e-4;
+    unsigned int     smoother_sweeps       = 2;
     /// amg | direct: approximate inverse of the s-s block (coupled systems).
-    std::string phase_field_preconditioner = "amg";
+    PhaseFieldPreconditioner phase_field_preconditioner =
+      PhaseFieldPreconditioner::amg;
+
+    /// The Amesos name of #direct_solver.
+    const std::string &
+    amesos_name() const
+    {
+      return name_of(direct_solver_names(), direct_solver);
+    }
 
     void
     declare(dealii::ParameterHandler &prm);
