@@ -93,7 +93,7 @@ end
             << std::endl;
       }
   const double energy = t.at("stored_energy").back();
-  worst = std::max(worst, Testing::relative_error(energy, m.psi, 1.));
+  worst = std::max(worst, Testing::relative_error(energy, m.psi_elastic, 1.));
   out << "stored energy = " << energy << std::endl;
   out << "forces and energy equal P(F) N A and Psi(F) V (1e-8): "
       << Testing::yes_no(worst < 1e-8) << std::endl;

@@ -78,8 +78,8 @@ end
     DriverErrors   worst;
     for (unsigned int n = 1; n < stats.at("time").size(); ++n)
       {
-        const double          lambda = 1. + 0.02 * stats.at("time")[n];
-        const PlasticResponse r =
+        const double           lambda = 1. + 0.02 * stats.at("time")[n];
+        const MaterialResponse r =
           Testing::uniaxial_plastic_step(lambda, h, stats.at("dt")[n], p);
         h                   = r.updated;
         const double P_xx   = r.tau[0][0] / lambda;

@@ -85,9 +85,10 @@ main()
               F[i][j] += amplitude * d(gen);
           if (near_yield)
             F = F * Fp;
-          const double          alpha = h.alpha + 0.002 * (1.2 + d(gen));
-          const double          s = 0.3, dt = 0.1;
-          const PlasticResponse r = plastic_update(F, h, alpha, s, dt, p, true);
+          const double           alpha = h.alpha + 0.002 * (1.2 + d(gen));
+          const double           s = 0.3, dt = 0.1;
+          const MaterialResponse r =
+            plastic_update(F, h, alpha, s, dt, p, true);
           ++(r.yielding ? plastic : elastic);
           if (r.yielding && std::abs(r.J - 1.) < delta)
             ++blended;
@@ -215,7 +216,7 @@ main()
             const double         J = 1. + 0.1 * i / 200.;
             const Tensor<2, dim> F =
               std::cbrt(J) * Tensor<2, dim>(unit_symmetric_tensor<dim>());
-            const PlasticResponse r =
+            const MaterialResponse r =
               plastic_update(F, PlasticHistory(), 0., s, 0.1, p, false);
             const double pressure = r.tau[0][0] / J;
             rising                = rising && pressure > previous;
@@ -242,8 +243,8 @@ main()
         const double   dt = 0.01; // 100 steps to 2 % stretch
         for (unsigned int n = 1; n <= 100; ++n)
           {
-            const double          lambda = 1. + 0.0002 * n;
-            const PlasticResponse r =
+            const double           lambda = 1. + 0.0002 * n;
+            const MaterialResponse r =
               Testing::uniaxial_plastic_step(lambda, h, dt, q);
             h                  = r.updated;
             const double eps   = std::log(lambda);
@@ -273,14 +274,14 @@ main()
 
   // 4. Elastic unloading.
   {
-    PlasticHistory  h;
-    PlasticResponse r;
+    PlasticHistory   h;
+    MaterialResponse r;
     for (unsigned int n = 1; n <= 50; ++n)
       {
         r = Testing::uniaxial_plastic_step(1. + 0.0002 * n, h, 0.01, p);
         h = r.updated;
       }
-    const PlasticResponse u =
+    const MaterialResponse u =
       Testing::uniaxial_plastic_step(1. + 0.0002 * 49, h, 0.01, p);
     const double E = 9. * p.bulk_modulus * p.shear_modulus /
                      (3. * p.bulk_modulus + p.shear_modulus);

@@ -271,7 +271,7 @@ end
    * diag(lambda, lt, lt) with tau_yy = 0 (lt by bisection) and alpha from
    * the local hardening equation r = 0 (Newton with dr/dalpha).
    */
-  inline DuctileContact::PlasticResponse
+  inline DuctileContact::MaterialResponse
   uniaxial_plastic_step(const double                                lambda,
                         const DuctileContact::PlasticHistory       &history,
                         const double                                dt,
@@ -280,8 +280,8 @@ end
     const auto solve_alpha =
       [&](const dealii::Tensor<2, DuctileContact::dim> &F) {
         // Start just above alpha_n (the one-sided derivative of the flow).
-        double                          alpha = history.alpha + 1e-12;
-        DuctileContact::PlasticResponse r =
+        double                           alpha = history.alpha + 1e-12;
+        DuctileContact::MaterialResponse r =
           DuctileContact::plastic_update(F, history, alpha, 0., dt, p, true);
         if (!r.yielding) // elastic: r = eta_p (alpha - alpha_n)/dt = 0
           return DuctileContact::plastic_update(

@@ -69,13 +69,13 @@ namespace DuctileContact
 
 
   void
-  add_displacement_rows(const PointResponse  &m,
-                        const BodyParameters &body,
-                        PointShapes          &shapes,
-                        const LocalDofs      &dofs,
-                        const double          JxW,
-                        const bool            tangent,
-                        LocalRows            &rows)
+  add_displacement_rows(const MaterialResponse &m,
+                        const BodyParameters   &body,
+                        PointShapes            &shapes,
+                        const LocalDofs        &dofs,
+                        const double            JxW,
+                        const bool              tangent,
+                        LocalRows              &rows)
   {
     const unsigned int n_u = dofs.u.size();
     for (unsigned int k = 0; k < n_u; ++k)
@@ -109,7 +109,7 @@ namespace DuctileContact
 
 
   void
-  add_hardening_rows(const PointResponse        &m,
+  add_hardening_rows(const MaterialResponse     &m,
                      const PlasticityParameters &plastic,
                      const double                gradient_coefficient,
                      const Tensor<1, dim>       &grad_alpha,
@@ -161,16 +161,16 @@ namespace DuctileContact
 
 
   void
-  add_phase_field_rows(const PointResponse  &m,
-                       const CrackDriver    &driver,
-                       const BodyParameters &body,
-                       const double          rate,
-                       const double          dt,
-                       const PointShapes    &shapes,
-                       const LocalDofs      &dofs,
-                       const double          JxW,
-                       const bool            tangent,
-                       LocalRows            &rows)
+  add_phase_field_rows(const MaterialResponse &m,
+                       const CrackDriver      &driver,
+                       const BodyParameters   &body,
+                       const double            rate,
+                       const double            dt,
+                       const PointShapes      &shapes,
+                       const LocalDofs        &dofs,
+                       const double            JxW,
+                       const bool              tangent,
+                       LocalRows              &rows)
   {
     const unsigned int n_u = dofs.u.size(), n_a = dofs.alpha.size(),
                        n_s = dofs.s.size();
@@ -180,7 +180,7 @@ namespace DuctileContact
       body.crack.critical_energy_release_rate / (2. * body.crack.length_scale);
     // d(g' psi_H)/ds = g'' psi_H + g' dpsi^+/ds when loading (psi^+
     // depends on s at points that do not yield, see
-    // PlasticResponse::dpsi_plus_ds).
+    // MaterialResponse::dpsi_plus_ds).
     const double ds_coefficient = eta_f / dt + driver.g2 * psi_H +
                                   (driver.loading ? g1 * m.dpsi_plus_ds : 0.);
     const auto &s_value = shapes.s_value;

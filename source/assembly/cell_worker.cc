@@ -87,7 +87,7 @@ namespace DuctileContact
     /// The crack driver of (51) at point @p q: psi^+_H = max(psi^+, H_n)
     /// with the branch evaluated, recorded or frozen.
     CrackDriver
-    crack_driver(const PointResponse         &m,
+    crack_driver(const MaterialResponse      &m,
                  const double                 psi_max,
                  const double                 s,
                  const DegradationParameters &degradation,
@@ -118,17 +118,23 @@ namespace DuctileContact
 
 
 
-    /// The solution of @p pass on @p cell at the quadrature points.
+    /// The solution @p u and the history of @p step on @p cell at the
+    /// quadrature points.
     void
-    load_cell_state(const FEValues<dim>                      &fe_values,
-                    const Discretisation                     &discretisation,
-                    const BodyFields                         &fields,
-                    const TrilinosWrappers::MPI::BlockVector &u,
-                    const StepData                           &step,
-                    const bool                                committing,
-                    CellScratch                              &scratch)
+    load_cell_state(const FEValues<dim>                         &fe_values,
+                    const Discretisation                        &discretisation,
+                    const BodyFields                            &fields,
+                    const TrilinosWrappers::MPI::BlockVector    &u,
+                    const StepData                              &step,
+                    const bool                                   committing,
+                    const DoFHandler<dim>::active_cell_iterator &cell,
+                    CellScratch                                 &scratch)
     {
       const unsigned int n_q = fe_values.n_quadrature_points;
+      scratch.history_n.assign(n_q, &scratch.default_history);
+      if (step.history && (fields.hardening || fields.phase_field))
+        for (unsigned int q = 0; q < n_q; ++q)
+          scratch.history_n[q] = (*step.history)(cell) + q;
       scratch.grad_u.resize(n_q);
       fe_values[discretisation.displacement].get_function_gradients(
         u, scratch.grad_u);
@@ -166,7 +172,7 @@ namespace DuctileContact
     double
     plastic_work(const Tensor<2, dim>       &F,
                  const Tensor<2, dim>       &grad_u_old,
-                 const PointResponse        &m,
+                 const MaterialResponse     &m,
                  const PlasticHistory       &history_n,
                  const double                s,
                  const PlasticityParameters &plastic)
@@ -201,8 +207,42 @@ namespace DuctileContact
 
 
 
+  MaterialResponse
+  SystemAssembler::point_response(const BodyParameters &body,
+                                  const Tensor<2, dim> &F,
+                                  const unsigned int    q,
+                                  const unsigned int    cell_index,
+                                  const BodyFields     &fields,
+                                  const CellScratch    &scratch,
+                                  const Pass           &pass,
+                                  AssemblyReduction    &sums) const
+  {
+    const AssemblyTargets *targets = pass.targets;
+    const Branches      mode = targets ? targets->branches : Branches::evaluate;
+    std::optional<bool> frozen;
+    if (fields.hardening && mode == Branches::frozen)
+      frozen =
+        targets->branch_record->get(cell_index, q, BranchRecord::yielding);
+    const MaterialResponse m = evaluate_material(body,
+                                                 F,
+                                                 scratch.history_n[q]->plastic,
+                                                 scratch.alpha[q],
+                                                 scratch.s[q],
+                                                 pass.step->dt,
+                                                 targets && targets->tangent,
+                                                 frozen);
+    if (mode == Branches::record && (fields.hardening || fields.phase_field) &&
+        m.yielding)
+      targets->branch_record->set(cell_index, q, BranchRecord::yielding);
+    if (frozen && m.trial_yielding != *frozen)
+      ++sums.switch_flips;
+    return m;
+  }
+
+
+
   void
-  SystemAssembler::hardening_point(const PointResponse        &m,
+  SystemAssembler::hardening_point(const MaterialResponse     &m,
                                    const BodyParameters       &body,
                                    const PlasticityParameters &plastic,
                                    const Tensor<2, dim>       &F,
@@ -249,7 +289,7 @@ namespace DuctileContact
 
 
   double
-  SystemAssembler::phase_field_point(const PointResponse         &m,
+  SystemAssembler::phase_field_point(const MaterialResponse      &m,
                                      const BodyParameters        &body,
                                      const DegradationParameters &degradation,
                                      const unsigned int           q,
@@ -333,11 +373,8 @@ namespace DuctileContact
                     *pass.u,
                     step,
                     pass.updated_history != nullptr,
+                    cell,
                     scratch);
-    scratch.history_n.assign(n_q, &scratch.default_history);
-    if (step.history && (has_alpha || has_s))
-      for (unsigned int q = 0; q < n_q; ++q)
-        scratch.history_n[q] = (*step.history)(cell) + q;
     PointHistory *history_new = (pass.updated_history && (has_alpha || has_s))
                                   ? (*pass.updated_history)(cell)
                                   : nullptr;
@@ -356,23 +393,8 @@ namespace DuctileContact
             sums.inverted = true;
             continue;
           }
-        const PointHistory &history = *scratch.history_n[q];
-        std::optional<bool> frozen;
-        if (has_alpha && mode == Branches::frozen)
-          frozen =
-            targets->branch_record->get(index, q, BranchRecord::yielding);
-        const PointResponse m = evaluate_material(body,
-                                                  F,
-                                                  history.plastic,
-                                                  scratch.alpha[q],
-                                                  scratch.s[q],
-                                                  step.dt,
-                                                  tangent,
-                                                  frozen);
-        if (mode == Branches::record && (has_alpha || has_s) && m.yielding)
-          targets->branch_record->set(index, q, BranchRecord::yielding);
-        if (frozen && m.trial_yielding != *frozen)
-          ++sums.switch_flips;
+        const MaterialResponse m =
+          point_response(body, F, q, index, fields, scratch, pass, sums);
         const double JxW = fe_values.JxW(q);
         sums.stored_energy += m.psi_elastic * JxW;
         volume += JxW;
@@ -384,16 +406,17 @@ namespace DuctileContact
             // Only the cell averages: the crack driver, no rows.
             if (has_s)
               {
-                const double psi_max =
-                  crack_history ? scratch.history_n[q]->psi_plus_max : 0.;
-                const CrackDriver d = crack_driver(m,
-                                                   psi_max,
-                                                   scratch.s[q],
-                                                   degradation,
-                                                   nullptr,
-                                                   index,
-                                                   q,
-                                                   sums);
+                const CrackDriver d =
+                  crack_driver(m,
+                               crack_history
+                                 ? scratch.history_n[q]->psi_plus_max
+                                 : 0.,
+                               scratch.s[q],
+                               degradation,
+                               nullptr,
+                               index,
+                               q,
+                               sums);
                 driver_sum += -d.g1 * d.psi_H * JxW;
               }
             continue;
@@ -436,9 +459,9 @@ namespace DuctileContact
 
     if (pass.averages)
       {
-        if (volume > 0.)
+        copy.has_averages = volume > 0.;
+        if (copy.has_averages)
           {
-            copy.has_averages        = true;
             copy.von_mises           = vm / volume;
             copy.mean_stress         = mean / volume;
             copy.mean_J              = mean_J / volume;
@@ -446,27 +469,43 @@ namespace DuctileContact
           }
         return;
       }
+    finish_rows(cell, fe_values, body, dofs, scratch, copy, pass);
+  }
 
+
+
+  void
+  SystemAssembler::finish_rows(
+    const DoFHandler<dim>::active_cell_iterator &cell,
+    const FEValues<dim>                         &fe_values,
+    const BodyParameters                        &body,
+    const LocalDofs                             &dofs,
+    CellScratch                                 &scratch,
+    CellCopy                                    &copy,
+    const Pass                                  &pass) const
+  {
+    LocalRows &rows  = copy.cell;
+    const bool has_s = !dofs.s.empty();
     if (has_s)
       {
         scratch.cell_values.reinit(rows.f_int.size());
         cell->get_dof_values(*pass.u, scratch.cell_values);
-        sums.fracture_energy += add_crack_functional_rows(fe_values,
-                                                          discretisation,
-                                                          body,
-                                                          scratch.cell_values,
-                                                          dofs,
-                                                          tangent,
-                                                          scratch.c0ip_matrix,
-                                                          rows);
+        copy.sums.fracture_energy +=
+          add_crack_functional_rows(fe_values,
+                                    discretisation,
+                                    body,
+                                    scratch.cell_values,
+                                    dofs,
+                                    pass.targets && pass.targets->tangent,
+                                    scratch.c0ip_matrix,
+                                    rows);
       }
-
-    reduce_rows(rows, dofs, sums);
+    reduce_rows(rows, dofs, copy.sums);
 
     // R = f_int - f_ext; the Newton right-hand side is -R.
     for (unsigned int i = 0; i < rows.rhs.size(); ++i)
       rows.rhs(i) = -rows.f_int(i);
-    add_traction_rows(cell, scratch, step.t, dofs, rows);
+    add_traction_rows(cell, scratch, pass.step->t, dofs, rows);
     if (has_s)
       face_terms(cell, scratch, copy, pass);
   }

@@ -5,7 +5,7 @@ namespace DuctileContact
 {
   using namespace dealii;
 
-  DegradedResponse
+  MaterialResponse
   degraded_neo_hooke(const Tensor<2, dim>        &F,
                      const double                 s,
                      const double                 mu,
@@ -16,7 +16,7 @@ namespace DuctileContact
     const double g  = degradation_value(s, degradation);
     const double dg = degradation_derivative(s, degradation);
 
-    DegradedResponse r;
+    MaterialResponse r;
     // neo_hooke() is linear in (mu, kappa) in psi, tau, P and A, so the
     // degraded law is the undegraded one with scaled moduli: one tangent
     // evaluation instead of one per part.
@@ -26,15 +26,15 @@ namespace DuctileContact
         const MaterialResponse full = neo_hooke(F, mu, kappa, with_tangent);
 
         r.J            = full.J;
-        r.psi          = g * full.psi;
-        r.psi_plus     = full.psi;
+        r.psi_elastic  = g * full.psi_elastic;
+        r.psi_plus     = full.psi_elastic;
         r.tau          = g * full.tau;
         r.P            = g * full.P;
         r.dP_ds        = dg * full.P;
         r.dpsi_plus_dF = full.P;
 
         if (with_tangent)
-          r.A = g * full.A;
+          r.dP_dF = g * full.dP_dF;
       }
     else
       {
@@ -44,15 +44,15 @@ namespace DuctileContact
         const MaterialResponse deviatoric = neo_hooke(F, mu, 0., false);
 
         r.J            = degraded.J;
-        r.psi          = degraded.psi;
-        r.psi_plus     = deviatoric.psi;
+        r.psi_elastic  = degraded.psi_elastic;
+        r.psi_plus     = deviatoric.psi_elastic;
         r.tau          = degraded.tau;
         r.P            = degraded.P;
         r.dP_ds        = dg * deviatoric.P;
         r.dpsi_plus_dF = deviatoric.P;
 
         if (with_tangent)
-          r.A = degraded.A;
+          r.dP_dF = degraded.dP_dF;
       }
     return r;
   }

@@ -91,14 +91,14 @@ namespace DuctileContact
     const Kinematics k = kinematics(F);
     MaterialResponse r;
     r.J = k.J;
-    r.psi =
+    r.psi_elastic =
       0.5 * kappa * (k.J - 1.) * (k.J - 1.) + 0.5 * mu * (trace(k.b_bar) - 3.);
     r.tau =
       kappa * (k.J * k.J - k.J) * StandardTensors::I + mu * deviator(k.b_bar);
     const Tensor<2, dim> F_inv = invert(F);
     r.P                        = Tensor<2, dim>(r.tau) * transpose(F_inv);
     if (with_tangent)
-      r.A =
+      r.dP_dF =
         first_elasticity_tensor(F_inv, spatial_tangent(k, mu, kappa), r.tau);
     return r;
   }

@@ -214,7 +214,7 @@ namespace DuctileContact
 
 
 
-  PlasticResponse
+  MaterialResponse
   plastic_update(const Tensor<2, dim>       &F,
                  const PlasticHistory       &history_n,
                  const double                alpha,
@@ -224,7 +224,7 @@ namespace DuctileContact
                  const bool                  with_tangent,
                  const std::optional<bool>  &frozen_yielding)
   {
-    PlasticResponse response;
+    MaterialResponse response;
     if (!with_tangent)
       {
         const Evaluation<double> e = evaluate<double>(

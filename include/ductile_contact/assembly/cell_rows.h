@@ -69,19 +69,19 @@ namespace DuctileContact
   /// Displacement rows int P : Grad du dV at one point and their tangent
   /// dP/dF (u-u block).
   void
-  add_displacement_rows(const PointResponse  &m,
-                        const BodyParameters &body,
-                        PointShapes          &shapes,
-                        const LocalDofs      &dofs,
-                        const double          JxW,
-                        const bool            tangent,
-                        LocalRows            &rows);
+  add_displacement_rows(const MaterialResponse &m,
+                        const BodyParameters   &body,
+                        PointShapes            &shapes,
+                        const LocalDofs        &dofs,
+                        const double            JxW,
+                        const bool              tangent,
+                        LocalRows              &rows);
 
   /// Hardening rows (50) at one point, int dalpha r + y_0 l_p^2 grad
   /// dalpha . grad alpha dV, with their tangent (alpha rows and the u-alpha
   /// coupling).
   void
-  add_hardening_rows(const PointResponse          &m,
+  add_hardening_rows(const MaterialResponse       &m,
                      const PlasticityParameters   &plastic,
                      const double                  gradient_coefficient,
                      const dealii::Tensor<1, dim> &grad_alpha,
@@ -95,16 +95,16 @@ namespace DuctileContact
   /// add_crack_functional_rows()): int (eta_f (s - s_n)/dt + g_k'(s)
   /// psi^+_H) ds dV, with their tangent (s rows and the u-s coupling).
   void
-  add_phase_field_rows(const PointResponse  &m,
-                       const CrackDriver    &driver,
-                       const BodyParameters &body,
-                       const double          rate,
-                       const double          dt,
-                       const PointShapes    &shapes,
-                       const LocalDofs      &dofs,
-                       const double          JxW,
-                       const bool            tangent,
-                       LocalRows            &rows);
+  add_phase_field_rows(const MaterialResponse &m,
+                       const CrackDriver      &driver,
+                       const BodyParameters   &body,
+                       const double            rate,
+                       const double            dt,
+                       const PointShapes      &shapes,
+                       const LocalDofs        &dofs,
+                       const double            JxW,
+                       const bool              tangent,
+                       LocalRows              &rows);
 
   /// The crack functional's cell terms a_K(s, ds) (linear in s) with the
   /// local values @p s_values of all cell DoFs; returns a_K(s, s)/2.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
@@ -98,10 +99,22 @@ namespace DuctileContact
                 CellCopy                                            &copy,
                 const Pass &pass) const;
 
+    /// The material law at point @p q of the cell @p cell_index with the
+    /// branches of @p pass (evaluated, recorded or frozen).
+    MaterialResponse
+    point_response(const BodyParameters         &body,
+                   const dealii::Tensor<2, dim> &F,
+                   const unsigned int            q,
+                   const unsigned int            cell_index,
+                   const BodyFields             &fields,
+                   const CellScratch            &scratch,
+                   const Pass                   &pass,
+                   AssemblyReduction            &sums) const;
+
     /// The hardening terms of point @p q: energy, extremes, plastic work
     /// (when @p committing) and the rows of (50).
     void
-    hardening_point(const PointResponse          &m,
+    hardening_point(const MaterialResponse       &m,
                     const BodyParameters         &body,
                     const PlasticityParameters   &plastic,
                     const dealii::Tensor<2, dim> &F,
@@ -118,7 +131,7 @@ namespace DuctileContact
     /// branch, viscous work, the history (into @p history_new if not null)
     /// and the rows of (51); returns the driver -g_k' psi^+_H JxW.
     double
-    phase_field_point(const PointResponse         &m,
+    phase_field_point(const MaterialResponse      &m,
                       const BodyParameters        &body,
                       const DegradationParameters &degradation,
                       const unsigned int           q,
@@ -139,6 +152,17 @@ namespace DuctileContact
                       const double     t,
                       const LocalDofs &dofs,
                       LocalRows       &rows) const;
+
+    /// After the points of @p cell: the crack functional's cell terms, the
+    /// magnitudes, -R, the tractions and the C0IP faces of the cell.
+    void
+    finish_rows(const dealii::DoFHandler<dim>::active_cell_iterator &cell,
+                const dealii::FEValues<dim>                         &fe_values,
+                const BodyParameters                                &body,
+                const LocalDofs                                     &dofs,
+                CellScratch                                         &scratch,
+                CellCopy                                            &copy,
+                const Pass &pass) const;
 
     /// The C0IP face terms of the interior faces that @p cell owns.
     void

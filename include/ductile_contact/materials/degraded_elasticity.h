@@ -5,33 +5,10 @@
 
 #include <ductile_contact/core/types.h>
 #include <ductile_contact/materials/degradation.h>
+#include <ductile_contact/materials/material_response.h>
 
 namespace DuctileContact
 {
-  /**
-   * State returned by degraded_neo_hooke(). Per reference volume: energies in
-   * J/m^3, stresses and their derivatives in Pa.
-   */
-  struct DegradedResponse
-  {
-    /// J = det F.
-    double J = 1.;
-    /// Degraded stored energy Psi^e of model.md (16).
-    double psi = 0.;
-    /// Crack driving energy psi^+ of model.md (27): H = -g_k'(s) psi^+.
-    double psi_plus = 0.;
-    /// Degraded Kirchhoff stress tau of model.md (18)-(19).
-    dealii::SymmetricTensor<2, dim> tau;
-    /// First Piola-Kirchhoff stress P = tau F^{-T} = dPsi^e/dF.
-    dealii::Tensor<2, dim> P;
-    /// A = dP/dF, A[a][B][c][D] = dP_aB / dF_cD (zero unless requested).
-    dealii::Tensor<4, dim> A;
-    /// dP/ds = g_vol'(s) P_vol + g_dev'(s) P_dev.
-    dealii::Tensor<2, dim> dP_ds;
-    /// dpsi^+/dF = [J > 1] P_vol + P_dev.
-    dealii::Tensor<2, dim> dpsi_plus_dF;
-  };
-
   /**
    * Degraded compressible neo-Hooke law of an elastic body that can crack
    * (no plasticity, C^p = I, so b^e = F F^T), model.md (16)-(19) and (27):
@@ -67,7 +44,7 @@ namespace DuctileContact
    * @param degradation  a_g and k of g_k(s)
    * @param with_tangent compute A (otherwise A is left zero)
    */
-  DegradedResponse
+  MaterialResponse
   degraded_neo_hooke(const dealii::Tensor<2, dim> &F,
                      const double                  s,
                      const double                  mu,

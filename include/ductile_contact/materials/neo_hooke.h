@@ -4,24 +4,10 @@
 #include <deal.II/base/tensor.h>
 
 #include <ductile_contact/core/types.h>
+#include <ductile_contact/materials/material_response.h>
 
 namespace DuctileContact
 {
-  /**
-   * State returned by a material point evaluation. Stresses per reference
-   * volume: tau is the Kirchhoff stress [Pa], P = tau F^{-T} the first
-   * Piola-Kirchhoff stress [Pa], A = dP/dF the first elasticity tensor [Pa]
-   * (A[a][B][c][D] = dP_aB / dF_cD), psi the stored energy [J/m^3].
-   */
-  struct MaterialResponse
-  {
-    double                          J   = 1.;
-    double                          psi = 0.;
-    dealii::SymmetricTensor<2, dim> tau;
-    dealii::Tensor<2, dim>          P;
-    dealii::Tensor<4, dim>          A;
-  };
-
   /**
    * Compressible neo-Hooke law of model.md (16) and (19) for an intact
    * (s = 0), elastic (C^p = I) material point:

@@ -4,6 +4,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <ductile_contact/core/types.h>
+#include <ductile_contact/materials/material_response.h>
 
 #include <optional>
 
@@ -44,48 +45,6 @@ namespace DuctileContact
                  const dealii::SymmetricTensor<2, dim> &Cp_inv,
                  const double                           s,
                  const PlasticityParameters            &p);
-
-  /// Quadrature-point history, committed only on accepted steps.
-  struct PlasticHistory
-  {
-    /// (C^p)^{-1}, symmetric with determinant 1.
-    dealii::SymmetricTensor<2, dim> Cp_inv =
-      dealii::unit_symmetric_tensor<dim>();
-    /// alpha_n
-    double alpha = 0.;
-  };
-
-  /**
-   * Result of plastic_update(). r is the local part of the hardening
-   * equation (50) per unit volume, r = eta_p (alpha - alpha_n)/dt +
-   * chi_p (yhat(alpha) - sqrt(3/2) n_tr : tau_dev) (the gradient term
-   * y_0 l_p^2 grad alpha . grad dalpha is added by the assembly).
-   */
-  struct PlasticResponse
-  {
-    double                          J           = 1.;
-    double                          psi_elastic = 0.; ///< degraded Psi^e (16)
-    double                          psi_plus = 0.; ///< crack driver psi^+ (27)
-    dealii::SymmetricTensor<2, dim> tau;
-    dealii::Tensor<2, dim>          P;
-    double                          r        = 0.;
-    bool                            yielding = false; ///< chi_p used
-    /// chi_p of the trial-state test (differs from yielding only when a
-    /// frozen switch was imposed).
-    bool           trial_yielding = false;
-    PlasticHistory updated;
-
-    /// Exact tangents (filled when requested).
-    dealii::Tensor<4, dim> dP_dF;
-    dealii::Tensor<2, dim> dP_dalpha, dP_ds;
-    dealii::Tensor<2, dim> dr_dF;
-    double                 dr_dalpha = 0., dr_ds = 0.;
-    dealii::Tensor<2, dim> dpsi_plus_dF;
-    /// psi^+ depends on s where chi_p = 0 and alpha != alpha_n: the flow
-    /// direction there, tau_tr / sqrt(|tau_tr|^2 + eps^2), scales with
-    /// g(s) (see plastic_update()).
-    double dpsi_plus_dalpha = 0., dpsi_plus_ds = 0.;
-  };
 
   /**
    * Material point update of model.md section 3, steps 1-3, a pure
@@ -149,7 +108,7 @@ namespace DuctileContact
    * for chi_p (the Newton line search keeps the switch of the iterate it
    * starts from, so that the residual is smooth along the line).
    */
-  PlasticResponse
+  MaterialResponse
   plastic_update(const dealii::Tensor<2, dim> &F,
                  const PlasticHistory         &history_n,
                  const double                  alpha,
