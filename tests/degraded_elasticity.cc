@@ -297,13 +297,13 @@ main()
                          std::abs(dpsi_ds));
 
             // 5. The plastic update with a yield stress never reached.
-            PlasticityParameters q;
-            q.shear_modulus      = mu;
-            q.bulk_modulus       = kappa;
-            q.initial_yield      = 1e30;
-            q.saturation_yield   = 1e30;
-            q.degradation_a      = p.a;
-            q.residual_stiffness = p.residual_stiffness;
+            PlasticityParameters q = Testing::unit_plasticity();
+            q.shear_modulus        = mu;
+            q.bulk_modulus         = kappa;
+            q.initial_yield        = 1e30;
+            q.saturation_yield     = 1e30;
+            q.degradation_a        = p.a;
+            q.residual_stiffness   = p.residual_stiffness;
             const MaterialResponse pr =
               plastic_update(F, PlasticHistory(), 0., s, 1., q, true);
             never_yields = never_yields && !pr.yielding;

@@ -103,8 +103,8 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out = Testing::open_output();
 
-  PlasticityParameters p;
-  p.viscosity = 1e-6;
+  PlasticityParameters p = Testing::unit_plasticity();
+  p.viscosity            = 1e-6;
 
   double residual[2] = {0., 0.};
   for (const unsigned int k : {0u, 1u})

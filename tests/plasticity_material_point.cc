@@ -54,7 +54,7 @@ main()
 {
   std::ofstream out("output");
   out << std::setprecision(6);
-  PlasticityParameters p; // mu = 1, kappa = 2.5, y0 = 0.005, y_inf = 0.006
+  PlasticityParameters p = Testing::unit_plasticity();
 
   // 1. and 2.: tangents and incompressibility in random plastic states,
   // with the sharp and the blended switch of (17).

@@ -26,6 +26,26 @@
 
 namespace Testing
 {
+  /// Dimensionless material-point parameters of the unit tests (mu = 1,
+  /// kappa = 2.5, y_0 = 0.005, y_inf = 0.006, eta = 25, h = 0, eta_p =
+  /// 1e-3, a_g = 2, k = 1e-8, sharp switch), not the program's defaults.
+  inline DuctileContact::PlasticityParameters
+  unit_plasticity()
+  {
+    DuctileContact::PlasticityParameters p;
+    p.shear_modulus           = 1.;
+    p.bulk_modulus            = 2.5;
+    p.initial_yield           = 0.005;
+    p.saturation_yield        = 0.006;
+    p.saturation_exponent     = 25.;
+    p.linear_hardening        = 0.;
+    p.viscosity               = 1e-3;
+    p.degradation_a           = 2.;
+    p.residual_stiffness      = 1e-8;
+    p.volumetric_switch_width = 0.;
+    return p;
+  }
+
   /// Columns of a statistics table.
   using Table = std::map<std::string, std::vector<double>>;
 

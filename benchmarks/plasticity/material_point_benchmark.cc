@@ -40,8 +40,15 @@ namespace
 int
 main()
 {
+  // The dimensionless values of the unit tests (Testing::unit_plasticity).
   PlasticityParameters p;
-  PlasticHistory       h;
+  p.shear_modulus       = 1.;
+  p.bulk_modulus        = 2.5;
+  p.initial_yield       = 0.005;
+  p.saturation_yield    = 0.006;
+  p.saturation_exponent = 25.;
+  p.viscosity           = 1e-3;
+  PlasticHistory h;
   h.alpha          = 0.01;
   Tensor<2, dim> F = unit_symmetric_tensor<dim>();
   F[0][0] += 0.02;

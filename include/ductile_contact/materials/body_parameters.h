@@ -22,14 +22,14 @@ namespace DuctileContact
     /// eta_f: viscosity of (51) [J/m^3 times pseudo time].
     double viscosity = 0.;
     /// a_g of the degradation g(s); 2 gives g = (1 - s)^2.
-    double degradation_a = 2.;
+    double degradation_a = MaterialDefaults::degradation_a;
     /// k of g_k(s) = (1 - k) g(s) + k.
-    double residual_stiffness = 1.e-8;
+    double residual_stiffness = MaterialDefaults::residual_stiffness;
     /// gamma_IP of the C0IP face terms; 0 selects 1.5 p (p + 1).
     double interior_penalty = 0.;
     /// delta: half-width in J of the smoothed tension/compression switch
     /// of the split (17) (bodies with plasticity; 0: the sharp switch).
-    double volumetric_switch_width = 0.;
+    double volumetric_switch_width = MaterialDefaults::volumetric_switch_width;
   };
 
   /**
@@ -45,17 +45,17 @@ namespace DuctileContact
   {
     dealii::types::material_id material_id   = 0;
     std::string                name          = "body";
-    double                     shear_modulus = 80.e9;
-    double                     bulk_modulus  = 160.e9;
+    double                     shear_modulus = MaterialDefaults::shear_modulus;
+    double                     bulk_modulus  = MaterialDefaults::bulk_modulus;
 
     /// Whether the body carries the hardening field alpha (plasticity).
     bool plasticity = false;
     /// Whether the body carries the crack phase field s (fracture).
     bool fracture = false;
 
-    /// Hardening law (21) and viscosity (34); the moduli and degradation
-    /// members are copied from this body by material().
-    PlasticityParameters plastic{80.e9, 160.e9, 95.e6, 110.e6, 25.4, 0., 1.e6};
+    /// Hardening law (21) and viscosity (34); its moduli and degradation
+    /// members are not read: material() takes them from this body.
+    PlasticityParameters plastic;
     /// l_p of the gradient term of (20)/(50) [m].
     double plastic_length_scale = 0.;
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <ductile_contact/core/types.h>
+#include <ductile_contact/materials/material_defaults.h>
 #include <ductile_contact/materials/material_response.h>
 
 #include <optional>
@@ -17,17 +18,19 @@ namespace DuctileContact
    */
   struct PlasticityParameters
   {
-    double shear_modulus       = 1.;    ///< mu
-    double bulk_modulus        = 2.5;   ///< kappa
-    double initial_yield       = 0.005; ///< y_0
-    double saturation_yield    = 0.006; ///< y_inf
-    double saturation_exponent = 25.;   ///< eta in (21)
-    double linear_hardening    = 0.;    ///< h in (21)
-    double viscosity           = 1e-3;  ///< eta_p in (34)
-    double degradation_a       = 2.;    ///< a_g in g(s)
-    double residual_stiffness  = 1e-8;  ///< k in g_k(s)
+    double shear_modulus    = MaterialDefaults::shear_modulus;    ///< mu
+    double bulk_modulus     = MaterialDefaults::bulk_modulus;     ///< kappa
+    double initial_yield    = MaterialDefaults::initial_yield;    ///< y_0
+    double saturation_yield = MaterialDefaults::saturation_yield; ///< y_inf
+    /// eta in (21)
+    double saturation_exponent = MaterialDefaults::saturation_exponent;
+    double linear_hardening = MaterialDefaults::linear_hardening; ///< h in (21)
+    double viscosity = MaterialDefaults::plastic_viscosity; ///< eta_p in (34)
+    double degradation_a = MaterialDefaults::degradation_a; ///< a_g in g(s)
+    /// k in g_k(s)
+    double residual_stiffness = MaterialDefaults::residual_stiffness;
     /// delta of the smoothed switch of (17); 0: sharp (see plastic_update)
-    double volumetric_switch_width = 0.;
+    double volumetric_switch_width = MaterialDefaults::volumetric_switch_width;
   };
 
   /// Saturation hardening yhat(alpha), model.md (21).
