@@ -33,7 +33,7 @@ namespace DuctileContact
    * elsewhere it is the Newton row of R. The norms and the convergence
    * test use C in place of R_s, so DoFs that sit on the bound with a zero
    * multiplier (e.g. s = 0 far from a crack, where round-off decides the
-   * sign of R) count as converged on either side of A. NewtonSolver
+   * sign of R) count as converged on either side of A. CoupledProblem
    * engages the active set only once plain Newton has converged to a state
    * whose C does not meet the tolerance, and in every iteration with the
    * bound refines A on the s block alone (identify_active_set()) before
