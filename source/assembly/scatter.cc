@@ -35,4 +35,17 @@ namespace DuctileContact
                                                indices,
                                                *targets.internal_force);
   }
+
+
+
+  void
+  compress(const AssemblyTargets &targets)
+  {
+    if (targets.tangent)
+      targets.tangent->compress(VectorOperation::add);
+    for (auto *v :
+         {targets.newton_rhs, targets.residual, targets.internal_force})
+      if (v)
+        v->compress(VectorOperation::add);
+  }
 } // namespace DuctileContact

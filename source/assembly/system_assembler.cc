@@ -66,12 +66,7 @@ namespace DuctileContact
     const AssemblyInfo info =
       run({&u, &step, &targets, nullptr, false}, constraints, nullptr);
 
-    if (targets.tangent)
-      targets.tangent->compress(VectorOperation::add);
-    for (auto *v :
-         {targets.newton_rhs, targets.residual, targets.internal_force})
-      if (v)
-        v->compress(VectorOperation::add);
+    compress(targets);
     return info;
   }
 

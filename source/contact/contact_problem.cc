@@ -626,12 +626,7 @@ namespace DuctileContact
                     targets);
           }
       }
-    if (targets.tangent)
-      targets.tangent->compress(VectorOperation::add);
-    for (auto *v :
-         {targets.newton_rhs, targets.residual, targets.internal_force})
-      if (v)
-        v->compress(VectorOperation::add);
+    compress(targets);
   }
 
 

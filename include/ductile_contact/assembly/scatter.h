@@ -25,4 +25,10 @@ namespace DuctileContact
           const dealii::AffineConstraints<double>            &constraints,
           const dealii::AffineConstraints<double>            &hanging_nodes,
           const AssemblyTargets                              &targets);
+
+  /// Ends an assembly into @p targets: compresses (adds across ranks) every
+  /// matrix and vector it holds. Used after the bulk and after the contact
+  /// terms.
+  void
+  compress(const AssemblyTargets &targets);
 } // namespace DuctileContact
