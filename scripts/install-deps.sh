@@ -4,7 +4,8 @@
 #   --plots  also installs python3-matplotlib and time (for the benchmarks)
 set -euo pipefail
 
-packages=(cmake make g++ libdeal.ii-dev openmpi-bin numdiff libopenblas0-pthread)
+packages=(cmake make g++ libdeal.ii-dev libmumps-dev libmetis-dev openmpi-bin numdiff
+          libopenblas0-pthread)
 if [[ "${1:-}" == "--plots" ]]; then
   packages+=(python3-matplotlib time)
 fi

@@ -488,6 +488,8 @@ namespace DuctileContact
                       << ls.minimum_time_step << " at t = " << t
                       << ". Results up to this time are in '"
                       << parameters.output.directory << "'." << std::endl;
+                if (Utilities::MPI::this_mpi_process(comm) == 0)
+                  linear_solver->print_summary(pcout.get_stream());
                 return 2;
               }
             continue;
@@ -522,6 +524,8 @@ namespace DuctileContact
         progress.print(p);
         controller.accept(dt_try, report.iterations);
       }
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      linear_solver->print_summary(pcout.get_stream());
     return 0;
   }
 } // namespace DuctileContact

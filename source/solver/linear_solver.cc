@@ -79,8 +79,10 @@ namespace DuctileContact
             }
         }
 
-    // The DoFs changed: the monolithic copy is rebuilt on the next solve.
+    // The DoFs changed: the monolithic copy is rebuilt on the next solve,
+    // and so is the direct solver's analysis.
     monolithic.reset();
+    mumps.reset();
   }
 
 
@@ -134,11 +136,7 @@ namespace DuctileContact
 
     if (parameters.type == LinearSolverType::direct)
       {
-        SolverControl                                  control(1, 0.);
-        TrilinosWrappers::SolverDirect::AdditionalData data(
-          false, parameters.amesos_name());
-        TrilinosWrappers::SolverDirect direct(control, data);
-        direct.solve(A, xu, bu);
+        solve_direct(A, xu, bu);
         return 1;
       }
 
@@ -165,6 +163,49 @@ namespace DuctileContact
         gmres.solve(A, xu, bu, amg);
       }
     return control.last_step();
+  }
+
+
+
+  void
+  LinearSolver::print_summary(std::ostream &out) const
+  {
+    if (!mumps)
+      return;
+    const MumpsSolver::Statistics &s = mumps->statistics();
+    out << "MUMPS (" << name_of(factorisation_names(), parameters.factorisation)
+        << ", " << name_of(direct_ordering_names(), parameters.ordering)
+        << " ordering): " << s.analyses << " analyses " << s.analysis_time
+        << " s, " << s.factorisations << " factorisations " << s.factor_time
+        << " s, " << s.solves << " solves " << s.solve_time << " s; "
+        << s.factor_entries << " entries in the last factors" << std::endl;
+  }
+
+
+
+  void
+  LinearSolver::solve_direct(const TrilinosWrappers::SparseMatrix &A,
+                             TrilinosWrappers::MPI::Vector        &x,
+                             const TrilinosWrappers::MPI::Vector  &b)
+  {
+    if (parameters.direct_solver == DirectSolver::mumps)
+      {
+        if (!mumps)
+          mumps = std::make_unique<MumpsSolver>(
+            discretisation.dof_handler.get_communicator(),
+            parameters.factorisation,
+            parameters.ordering);
+        mumps->factorize(A.trilinos_matrix());
+        mumps->solve(x.trilinos_vector(), b.trilinos_vector());
+        return;
+      }
+    SolverControl                                  control(1, 0.);
+    TrilinosWrappers::SolverDirect::AdditionalData data(
+      false,
+      parameters.direct_solver == DirectSolver::amesos_klu ? "Amesos_Klu"
+                                                           : "Amesos_Mumps");
+    TrilinosWrappers::SolverDirect direct(control, data);
+    direct.solve(A, x, b);
   }
 
 
@@ -362,11 +403,7 @@ namespace DuctileContact
       }
     m.x = 0.;
 
-    SolverControl                                  control(1, 0.);
-    TrilinosWrappers::SolverDirect::AdditionalData data(
-      false, parameters.amesos_name());
-    TrilinosWrappers::SolverDirect direct(control, data);
-    direct.solve(m.matrix, m.x, m.b);
+    solve_direct(m.matrix, m.x, m.b);
 
     const double *flat_x = m.x.trilinos_vector()[0];
     for (unsigned int I = 0; I < n_blocks; ++I)

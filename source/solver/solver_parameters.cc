@@ -155,7 +155,7 @@ namespace DuctileContact
       "Type",
       type,
       linear_solver_type_names(),
-      "direct: sparse LU (Trilinos Amesos, see Direct solver) of the whole "
+      "direct: sparse factorisation (see Direct solver) of the whole "
       "system; cg-amg: CG preconditioned by Trilinos ML AMG with the six "
       "rigid-body modes; gmres-amg: GMRES with the same AMG (for "
       "non-symmetric tangents). With alpha or s unknowns the coupled tangent "
@@ -166,7 +166,29 @@ namespace DuctileContact
                "Direct solver",
                direct_solver,
                direct_solver_names(),
-               "Amesos package used by Type = direct.");
+               "Type = direct: mumps: MUMPS analysed once per sparsity "
+               "pattern and refactorised per Newton iteration (see Ordering "
+               "and Factorisation); Amesos_Mumps: MUMPS through Trilinos "
+               "Amesos, analysed again on every solve; Amesos_Klu: KLU through "
+               "Amesos (one "
+               "rank factorises).");
+    add_option(prm,
+               "Ordering",
+               ordering,
+               direct_ordering_names(),
+               "Direct solver = mumps: fill-reducing ordering. metis: "
+               "METIS nested dissection of the pattern, handed to MUMPS as "
+               "its pivot order; automatic: MUMPS's choice among those it "
+               "was built with (Debian: AMD, AMF, QAMD, PORD); amd, pord: "
+               "that one.");
+    add_option(prm,
+               "Factorisation",
+               factorisation,
+               factorisation_names(),
+               "Direct solver = mumps: lu (any tangent) or ldlt (the upper "
+               "triangle only: about half the time and memory, exact only "
+               "for a symmetric tangent; with an unsymmetric one Newton "
+               "converges more slowly).");
     prm.add_parameter("Relative tolerance",
                       relative_tolerance,
                       "Iterative solvers stop when the residual is below "

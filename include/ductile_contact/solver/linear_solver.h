@@ -7,12 +7,14 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ductile_contact/discretisation/discretisation.h>
+#include <ductile_contact/solver/mumps_solver.h>
 #include <ductile_contact/solver/solver_parameters.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
 #include <array>
 #include <memory>
+#include <ostream>
 #include <vector>
 
 namespace DuctileContact
@@ -21,8 +23,9 @@ namespace DuctileContact
    * Solves the Newton system K delta = b.
    *
    * Without alpha and s unknowns (both blocks empty), on the displacement
-   * block: a sparse direct solver (Trilinos Amesos: KLU or MUMPS), or CG /
-   * GMRES preconditioned by ML smoothed-aggregation AMG, whose near-null
+   * block: a sparse direct solver (MUMPS through MumpsSolver, whose analysis
+   * is kept while the pattern is, or KLU / MUMPS through Trilinos Amesos), or
+   * CG / GMRES preconditioned by ML smoothed-aggregation AMG, whose near-null
    * space is the six rigid-body modes of the displacement DoFs (three
    * translations, three rotations about the support points).
    *
@@ -30,8 +33,9 @@ namespace DuctileContact
    * which is not symmetric in general:
    *  - direct: the nine blocks are copied into one Trilinos matrix over the
    *    global DoF indices (blocks are numbered consecutively) and factorised
-   *    by Amesos; the pattern of that copy is built on the first solve after
-   *    setup() and reused, only the values are copied on each solve;
+   *    by the direct solver; the pattern of that copy is built on the first
+   *    solve after setup() and reused, only the values are copied on each
+   *    solve;
    *  - cg-amg, gmres-amg: right-preconditioned GMRES with the block
    *    lower-triangular preconditioner BlockTriangularPreconditioner, the
    *    diagonal blocks approximately inverted by the AMG above (u), a scalar
@@ -57,6 +61,11 @@ namespace DuctileContact
           dealii::TrilinosWrappers::MPI::BlockVector        &x,
           const dealii::TrilinosWrappers::MPI::BlockVector  &b);
 
+    /// One line on the direct solver's work so far (analyses,
+    /// factorisations, solves and their times), if it kept any.
+    void
+    print_summary(std::ostream &out) const;
+
   private:
     /// The displacement block alone (alpha and s empty).
     unsigned int
@@ -64,7 +73,13 @@ namespace DuctileContact
                        dealii::TrilinosWrappers::MPI::BlockVector        &x,
                        const dealii::TrilinosWrappers::MPI::BlockVector  &b);
 
-    /// Amesos on the monolithic copy of the coupled system.
+    /// x = A^{-1} b by the Direct solver (MUMPS keeps its analysis).
+    void
+    solve_direct(const dealii::TrilinosWrappers::SparseMatrix &A,
+                 dealii::TrilinosWrappers::MPI::Vector        &x,
+                 const dealii::TrilinosWrappers::MPI::Vector  &b);
+
+    /// The direct solver on the monolithic copy of the coupled system.
     unsigned int
     solve_coupled_direct(const dealii::TrilinosWrappers::BlockSparseMatrix &K,
                          dealii::TrilinosWrappers::MPI::BlockVector        &x,
@@ -119,5 +134,9 @@ namespace DuctileContact
       std::array<std::vector<int>, 9> position;
     };
     std::unique_ptr<Monolithic> monolithic;
+
+    /// Direct solver = mumps: kept between solves (its analysis is redone
+    /// only when the pattern changes).
+    std::unique_ptr<MumpsSolver> mumps;
   };
 } // namespace DuctileContact

@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <ductile_contact/core/option.h>
+#include <ductile_contact/solver/mumps_solver.h>
 
 #include <string>
 
@@ -92,20 +93,44 @@ namespace DuctileContact
     return t;
   }
 
-  /// Linear solver/Direct solver: the Trilinos Amesos package (its name is
-  /// the one Amesos takes).
+  /// Linear solver/Direct solver.
   enum class DirectSolver
   {
-    klu,
-    mumps
+    /// MUMPS through its own interface (MumpsSolver): analysis once per
+    /// sparsity pattern, Ordering and Factorisation as set.
+    mumps,
+    /// MUMPS through Trilinos Amesos: a new analysis on every solve.
+    amesos_mumps,
+    /// KLU through Trilinos Amesos.
+    amesos_klu
   };
 
   inline const NameTable<DirectSolver> &
   direct_solver_names()
   {
-    static const NameTable<DirectSolver> t{{DirectSolver::klu, "Amesos_Klu"},
-                                           {DirectSolver::mumps,
-                                            "Amesos_Mumps"}};
+    static const NameTable<DirectSolver> t{
+      {DirectSolver::mumps, "mumps"},
+      {DirectSolver::amesos_mumps, "Amesos_Mumps"},
+      {DirectSolver::amesos_klu, "Amesos_Klu"}};
+    return t;
+  }
+
+  inline const NameTable<DirectOrdering> &
+  direct_ordering_names()
+  {
+    static const NameTable<DirectOrdering> t{{DirectOrdering::metis, "metis"},
+                                             {DirectOrdering::automatic,
+                                              "automatic"},
+                                             {DirectOrdering::amd, "amd"},
+                                             {DirectOrdering::pord, "pord"}};
+    return t;
+  }
+
+  inline const NameTable<Factorisation> &
+  factorisation_names()
+  {
+    static const NameTable<Factorisation> t{{Factorisation::lu, "lu"},
+                                            {Factorisation::ldlt, "ldlt"}};
     return t;
   }
 
@@ -129,6 +154,8 @@ namespace DuctileContact
   {
     LinearSolverType type                  = LinearSolverType::direct;
     DirectSolver     direct_solver         = DirectSolver::mumps;
+    DirectOrdering   ordering              = DirectOrdering::metis;
+    Factorisation    factorisation         = Factorisation::lu;
     double           relative_tolerance    = 1.e-8;
     unsigned int     max_iterations        = 2000;
     double           aggregation_threshold = 1.e-4;
@@ -137,11 +164,13 @@ namespace DuctileContact
     PhaseFieldPreconditioner phase_field_preconditioner =
       PhaseFieldPreconditioner::amg;
 
-    /// The Amesos name of #direct_solver.
-    const std::string &
+    /// The Amesos package of #direct_solver, for the small auxiliary solves
+    /// that go through Amesos (Amesos_Mumps for mumps).
+    std::string
     amesos_name() const
     {
-      return name_of(direct_solver_names(), direct_solver);
+      return direct_solver == DirectSolver::amesos_klu ? "Amesos_Klu"
+                                                       : "Amesos_Mumps";
     }
 
     void

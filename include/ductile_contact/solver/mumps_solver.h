@@ -1,0 +1,119 @@
+#pragma once
+
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_MultiVector.h>
+#include <memory>
+#include <mpi.h>
+#include <string>
+#include <vector>
+
+namespace DuctileContact
+{
+  /// Linear solver/Ordering: the fill-reducing order of the direct solver.
+  enum class DirectOrdering
+  {
+    /// METIS nested dissection of the symmetrised graph, computed by us
+    /// and handed to MUMPS as its pivot order (Debian's MUMPS has no METIS).
+    metis,
+    /// MUMPS's own choice among the orderings it was built with.
+    automatic,
+    amd,
+    pord
+  };
+
+  /// Linear solver/Factorisation: how the matrix is factorised.
+  enum class Factorisation
+  {
+    /// K = L U (any matrix).
+    lu,
+    /// K = L D L^T from the upper triangle: half the work and memory, for a
+    /// symmetric tangent only (an unsymmetric one is solved inexactly).
+    ldlt
+  };
+
+  /**
+   * A sparse direct solver for a distributed Epetra matrix through the C
+   * interface of MUMPS (the matrix handed over distributed, one triplet per
+   * owned entry; right-hand side and solution gathered on rank 0).
+   *
+   * The analysis (ordering and symbolic factorisation) depends only on the
+   * sparsity pattern; it is done when factorize() sees a pattern other than
+   * the last one and reused otherwise, so that a Newton iteration pays for
+   * the numerical factorisation and the triangular solves only.
+   */
+  class MumpsSolver
+  {
+  public:
+    /// Time and count of each phase since construction.
+    struct Statistics
+    {
+      unsigned int analyses       = 0;
+      unsigned int factorisations = 0;
+      unsigned int solves         = 0;
+      double       analysis_time  = 0.;
+      double       factor_time    = 0.;
+      double       solve_time     = 0.;
+      /// Entries of the factors (MUMPS INFOG(29)) of the last one.
+      double factor_entries = 0.;
+    };
+
+    MumpsSolver(MPI_Comm       comm,
+                Factorisation  factorisation,
+                DirectOrdering ordering);
+    ~MumpsSolver();
+    MumpsSolver(const MumpsSolver &) = delete;
+    MumpsSolver &
+    operator=(const MumpsSolver &) = delete;
+
+    /// Factorises @p A (collective), after a new analysis if its pattern
+    /// differs from that of the last call on any rank.
+    void
+    factorize(const Epetra_CrsMatrix &A);
+
+    /// x = A^{-1} b with the last factorisation; @p b and @p x have the row
+    /// map of A.
+    void
+    solve(Epetra_MultiVector &x, const Epetra_MultiVector &b);
+
+    const Statistics &
+    statistics() const
+    {
+      return stats;
+    }
+
+  private:
+    /// Calls MUMPS with @p job and throws with MUMPS's error codes on
+    /// failure; a workspace too small (INFOG(1) = -8, -9) is enlarged and
+    /// the job repeated.
+    void
+    run(int job, const std::string &what);
+
+    /// The METIS pivot order of the pattern in #row, #column (rank 0 only).
+    void
+    compute_metis_order();
+
+    MPI_Comm       comm;
+    Factorisation  factorisation;
+    DirectOrdering ordering;
+
+    /// The MUMPS instance (DMUMPS_STRUC_C, kept opaque here).
+    struct Instance;
+    std::unique_ptr<Instance> mumps;
+
+    /// Owned triplets, 1-based global indices (upper triangle for ldlt).
+    std::vector<int>    row, column;
+    std::vector<double> value;
+    /// Position in the row-major entries of A of each triplet.
+    std::vector<int> source;
+    bool             analysed = false;
+
+    /// Global rows owned here (in the order of the vectors' local indices),
+    /// and on rank 0 the counts and offsets of every rank's rows.
+    std::vector<int>    owned_rows;
+    std::vector<int>    counts, offsets, gathered_rows;
+    std::vector<double> gathered, rhs;
+    std::vector<int>    pivot_order;
+
+    Statistics stats;
+  };
+} // namespace DuctileContact

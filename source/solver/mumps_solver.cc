@@ -1,0 +1,375 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/trilinos_index_access.h>
+
+#include <ductile_contact/solver/mumps_solver.h>
+
+#include <algorithm>
+#include <dmumps_c.h>
+#include <metis.h>
+#include <stdexcept>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  struct MumpsSolver::Instance
+  {
+    DMUMPS_STRUC_C id;
+  };
+
+  namespace
+  {
+    /// MUMPS's 1-based parameter arrays.
+    int &
+    icntl(DMUMPS_STRUC_C &id, const int i)
+    {
+      return id.icntl[i - 1];
+    }
+
+    int
+    infog(const DMUMPS_STRUC_C &id, const int i)
+    {
+      return id.infog[i - 1];
+    }
+
+    /// The MUMPS code of an ordering (ICNTL(7)).
+    int
+    mumps_ordering(const DirectOrdering ordering)
+    {
+      switch (ordering)
+        {
+        case DirectOrdering::metis:
+          return 1; // the user's pivot order, PERM_IN
+        case DirectOrdering::amd:
+          return 0;
+        case DirectOrdering::pord:
+          return 4;
+        case DirectOrdering::automatic:
+          return 7;
+        }
+      return 7;
+    }
+
+    std::string
+    mumps_error(const int code)
+    {
+      switch (code)
+        {
+        case -8:
+        case -9:
+        case -14:
+        case -15:
+          return "work space too small";
+        case -10:
+          return "numerically singular matrix";
+        case -13:
+          return "memory allocation failed";
+        default:
+          return "see the MUMPS user guide, section 'Error diagnostics'";
+        }
+    }
+  } // namespace
+
+
+
+  MumpsSolver::MumpsSolver(const MPI_Comm       comm,
+                           const Factorisation  factorisation,
+                           const DirectOrdering ordering)
+      : comm(comm)
+      , factorisation(factorisation)
+      , ordering(ordering)
+      , mumps(std::make_unique<Instance>())
+  {
+    DMUMPS_STRUC_C &id = mumps->id;
+    id.job             = -1;
+    id.par             = 1; // rank 0 works too
+    id.sym             = (factorisation == Factorisation::ldlt ? 2 : 0);
+    id.comm_fortran    = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
+    dmumps_c(&id);
+    AssertThrow(infog(id, 1) >= 0,
+                ExcMessage("MUMPS could not be initialised (INFOG(1) = " +
+                           std::to_string(infog(id, 1)) + ")"));
+    // No output of MUMPS's own: failures become exceptions here.
+    icntl(id, 1)  = -1;
+    icntl(id, 2)  = -1;
+    icntl(id, 3)  = -1;
+    icntl(id, 4)  = 0;
+    icntl(id, 5)  = 0; // assembled matrix
+    icntl(id, 18) = 3; // distributed triplets
+    icntl(id, 20) = 0; // dense right-hand side on rank 0
+    icntl(id, 21) = 0; // solution on rank 0
+    icntl(id, 28) = 1; // sequential analysis (the orderings we have)
+    icntl(id, 7)  = mumps_ordering(ordering);
+    icntl(id, 14) = 30; // work space margin over the analysis' estimate, %
+  }
+
+
+
+  MumpsSolver::~MumpsSolver()
+  {
+    mumps->id.job = -2;
+    dmumps_c(&mumps->id);
+  }
+
+
+
+  void
+  MumpsSolver::run(const int job, const std::string &what)
+  {
+    DMUMPS_STRUC_C &id = mumps->id;
+    for (unsigned int attempt = 0;; ++attempt)
+      {
+        id.job = job;
+        dmumps_c(&id);
+        const int code = infog(id, 1);
+        if (code >= 0)
+          return;
+        if ((code == -8 || code == -9) && attempt < 4)
+          {
+            icntl(id, 14) *= 2;
+            continue;
+          }
+        throw std::runtime_error(
+          "MUMPS " + what + " failed: INFOG(1) = " + std::to_string(code) +
+          ", INFOG(2) = " + std::to_string(infog(id, 2)) + " (" +
+          mumps_error(code) + ")");
+      }
+  }
+
+
+
+  void
+  MumpsSolver::compute_metis_order()
+  {
+    const int rank = Utilities::MPI::this_mpi_process(comm);
+    const int size = Utilities::MPI::n_mpi_processes(comm);
+
+    // The pattern on rank 0.
+    const int        n_local = static_cast<int>(row.size());
+    std::vector<int> n_entries(size), entry_offsets(size + 1, 0);
+    MPI_Gather(&n_local, 1, MPI_INT, n_entries.data(), 1, MPI_INT, 0, comm);
+    if (rank == 0)
+      for (int p = 0; p < size; ++p)
+        entry_offsets[p + 1] = entry_offsets[p] + n_entries[p];
+    std::vector<int> all_rows(rank == 0 ? entry_offsets[size] : 0),
+      all_columns(all_rows.size());
+    MPI_Gatherv(row.data(),
+                n_local,
+                MPI_INT,
+                all_rows.data(),
+                n_entries.data(),
+                entry_offsets.data(),
+                MPI_INT,
+                0,
+                comm);
+    MPI_Gatherv(column.data(),
+                n_local,
+                MPI_INT,
+                all_columns.data(),
+                n_entries.data(),
+                entry_offsets.data(),
+                MPI_INT,
+                0,
+                comm);
+    if (rank != 0)
+      return;
+
+    // The graph of K + K^T without the diagonal, in compressed rows.
+    idx_t              n = mumps->id.n;
+    std::vector<idx_t> xadj(n + 1, 0);
+    for (std::size_t k = 0; k < all_rows.size(); ++k)
+      if (all_rows[k] != all_columns[k])
+        {
+          ++xadj[all_rows[k]];
+          ++xadj[all_columns[k]];
+        }
+    for (idx_t i = 0; i < n; ++i)
+      xadj[i + 1] += xadj[i];
+    std::vector<idx_t> adjacency(xadj[n]);
+    std::vector<idx_t> fill(xadj.begin(), xadj.end() - 1);
+    for (std::size_t k = 0; k < all_rows.size(); ++k)
+      if (all_rows[k] != all_columns[k])
+        {
+          const idx_t i = all_rows[k] - 1, j = all_columns[k] - 1;
+          adjacency[fill[i]++] = j;
+          adjacency[fill[j]++] = i;
+        }
+    // Both (i, j) and (j, i) may be stored: remove repeated neighbours.
+    idx_t end = 0;
+    for (idx_t i = 0; i < n; ++i)
+      {
+        const auto first = adjacency.begin() + xadj[i];
+        const auto last  = adjacency.begin() + xadj[i + 1];
+        std::sort(first, last);
+        const auto unique_end = std::unique(first, last);
+        const auto begin      = end;
+        for (auto p = first; p != unique_end; ++p)
+          adjacency[end++] = *p;
+        xadj[i] = begin;
+      }
+    xadj[n] = end;
+
+    idx_t options[METIS_NOPTIONS];
+    METIS_SetDefaultOptions(options);
+    options[METIS_OPTION_NUMBERING] = 0;
+    std::vector<idx_t> permutation(n), inverse(n);
+    const int          ierr = METIS_NodeND(&n,
+                                  xadj.data(),
+                                  adjacency.data(),
+                                  nullptr,
+                                  options,
+                                  permutation.data(),
+                                  inverse.data());
+    AssertThrow(ierr == METIS_OK,
+                ExcMessage("METIS_NodeND failed with code " +
+                           std::to_string(ierr)));
+    // METIS: row i of K is row inverse[i] of the reordered matrix, i.e. the
+    // position of unknown i in the pivot order (1-based for MUMPS).
+    pivot_order.resize(n);
+    for (idx_t i = 0; i < n; ++i)
+      pivot_order[i] = static_cast<int>(inverse[i]) + 1;
+  }
+
+
+
+  void
+  MumpsSolver::factorize(const Epetra_CrsMatrix &A)
+  {
+    // The owned triplets (1-based global indices), built afresh: comparing
+    // them with the last ones tells whether the pattern changed.
+    std::vector<int> new_row, new_column;
+    new_row.reserve(A.NumMyNonzeros());
+    new_column.reserve(A.NumMyNonzeros());
+    value.clear();
+    value.reserve(A.NumMyNonzeros());
+    for (int r = 0; r < A.NumMyRows(); ++r)
+      {
+        int     n;
+        double *values;
+        int    *indices;
+        A.ExtractMyRowView(r, n, values, indices);
+        const int i =
+          static_cast<int>(TrilinosWrappers::global_row_index(A, r)) + 1;
+        for (int k = 0; k < n; ++k)
+          {
+            const int j =
+              static_cast<int>(
+                TrilinosWrappers::global_column_index(A, indices[k])) +
+              1;
+            if (factorisation == Factorisation::ldlt && j < i)
+              continue;
+            new_row.push_back(i);
+            new_column.push_back(j);
+            value.push_back(values[k]);
+          }
+      }
+    const bool same    = analysed && new_row == row && new_column == column;
+    const bool analyse = Utilities::MPI::min(same ? 1 : 0, comm) == 0;
+
+    DMUMPS_STRUC_C &id = mumps->id;
+    if (analyse)
+      {
+        Timer timer;
+        row.swap(new_row);
+        column.swap(new_column);
+        id.n       = A.NumGlobalRows();
+        id.nnz_loc = static_cast<MUMPS_INT8>(row.size());
+        id.irn_loc = row.data();
+        id.jcn_loc = column.data();
+        id.a_loc   = value.data();
+
+        owned_rows.resize(A.NumMyRows());
+        for (int r = 0; r < A.NumMyRows(); ++r)
+          owned_rows[r] =
+            static_cast<int>(TrilinosWrappers::global_row_index(A, r));
+        const int rank    = Utilities::MPI::this_mpi_process(comm);
+        const int size    = Utilities::MPI::n_mpi_processes(comm);
+        const int n_owned = A.NumMyRows();
+        counts.assign(size, 0);
+        offsets.assign(size + 1, 0);
+        MPI_Gather(&n_owned, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+        for (int p = 0; p < size; ++p)
+          offsets[p + 1] = offsets[p] + counts[p];
+        gathered_rows.resize(rank == 0 ? offsets[size] : 0);
+        MPI_Gatherv(owned_rows.data(),
+                    n_owned,
+                    MPI_INT,
+                    gathered_rows.data(),
+                    counts.data(),
+                    offsets.data(),
+                    MPI_INT,
+                    0,
+                    comm);
+        gathered.resize(gathered_rows.size());
+        rhs.resize(rank == 0 ? id.n : 0);
+
+        if (ordering == DirectOrdering::metis)
+          {
+            compute_metis_order();
+            id.perm_in = (rank == 0 ? pivot_order.data() : nullptr);
+          }
+        run(1, "analysis");
+        analysed = true;
+        ++stats.analyses;
+        stats.analysis_time += timer.wall_time();
+      }
+
+    Timer timer;
+    id.irn_loc = row.data();
+    id.jcn_loc = column.data();
+    id.a_loc   = value.data();
+    run(2, "factorisation");
+    ++stats.factorisations;
+    stats.factor_time += timer.wall_time();
+    stats.factor_entries = static_cast<double>(
+      infog(id, 29) >= 0 ? infog(id, 29) : -1.e6 * infog(id, 29));
+  }
+
+
+
+  void
+  MumpsSolver::solve(Epetra_MultiVector &x, const Epetra_MultiVector &b)
+  {
+    AssertThrow(analysed, ExcMessage("MumpsSolver::solve before factorize"));
+    AssertThrow(b.MyLength() == static_cast<int>(owned_rows.size()) &&
+                  x.MyLength() == b.MyLength(),
+                ExcMessage("vectors of another layout than the matrix"));
+    Timer           timer;
+    DMUMPS_STRUC_C &id   = mumps->id;
+    const int       rank = Utilities::MPI::this_mpi_process(comm);
+
+    MPI_Gatherv(b[0],
+                b.MyLength(),
+                MPI_DOUBLE,
+                gathered.data(),
+                counts.data(),
+                offsets.data(),
+                MPI_DOUBLE,
+                0,
+                comm);
+    if (rank == 0)
+      for (std::size_t k = 0; k < gathered.size(); ++k)
+        rhs[gathered_rows[k]] = gathered[k];
+
+    id.rhs  = (rank == 0 ? rhs.data() : nullptr);
+    id.nrhs = 1;
+    id.lrhs = id.n;
+    run(3, "solve");
+
+    if (rank == 0)
+      for (std::size_t k = 0; k < gathered.size(); ++k)
+        gathered[k] = rhs[gathered_rows[k]];
+    MPI_Scatterv(gathered.data(),
+                 counts.data(),
+                 offsets.data(),
+                 MPI_DOUBLE,
+                 x[0],
+                 x.MyLength(),
+                 MPI_DOUBLE,
+                 0,
+                 comm);
+    ++stats.solves;
+    stats.solve_time += timer.wall_time();
+  }
+} // namespace DuctileContact
