@@ -221,13 +221,21 @@ namespace
     const unsigned int bound   = 30;
     const auto         run_all = [&](const std::string &label, const bool klu) {
       parameters.type = LinearSolverType::direct;
-      for (const std::string direct : {"Amesos_Klu", "Amesos_Mumps"})
-        if (klu || direct == "Amesos_Mumps")
+      for (const std::string direct : {"Amesos_Klu", "Amesos_Mumps", "mumps"})
+        if (klu || direct != "Amesos_Klu")
           {
             parameters.direct_solver = from_name(direct_solver_names(), direct);
             check(label + "direct " + direct, 0);
           }
       const bool has_s = d.dofs_per_block[Block::phase_field] > 0;
+      // The u-only test tangent is symmetric: LDL^T of its upper triangle.
+      if (!has_s && d.dofs_per_block[Block::hardening] == 0)
+        {
+          parameters.direct_solver = DirectSolver::mumps;
+          parameters.factorisation = Factorisation::ldlt;
+          check(label + "direct mumps ldlt (symmetric K)", 0);
+          parameters.factorisation = Factorisation::lu;
+        }
       for (const std::string type : {"gmres-amg", "cg-amg"})
         for (const std::string s : {"amg", "direct"})
           if ((type == "gmres-amg" || (s == "amg" && (full || !has_s))) &&
@@ -251,6 +259,21 @@ namespace
     parameters.type          = LinearSolverType::direct;
     parameters.direct_solver = DirectSolver::mumps;
     check("direct after a change of values", 0);
+    // A small change: GMRES with the factors of the last matrix.
+    parameters.reuse_iterations = 20;
+    assemble(d, d.hanging_node_constraints, 2.1, K);
+    {
+      K.vmult(b, x_exact);
+      x                      = 0;
+      const unsigned int its = solver.solve(K, x, b);
+      x -= x_exact;
+      out << "  direct reusing the last factors: error < 1e-6: "
+          << Testing::yes_no(x.l2_norm() / x_exact.l2_norm() < 1e-6)
+          << ", GMRES with old factors (2 to 20 iterations): "
+          << Testing::yes_no(its >= 2 && its <= 20) << std::endl;
+      std::cout << "reuse: " << its << " iterations" << std::endl;
+    }
+    parameters.reuse_iterations = 0;
     solver.setup();
     check("direct after setup()", 0);
 

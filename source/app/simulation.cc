@@ -296,34 +296,6 @@ namespace DuctileContact
 
 
   void
-  Simulation::add_contact_columns(const StepReport &report)
-  {
-    const char *xyz[] = {"x", "y", "z"};
-    const auto &pairs = parameters.contact_pairs;
-    for (unsigned int p = 0; p < pairs.size(); ++p)
-      {
-        const ContactPairSummary &c = contact->summary()[p];
-        const std::string name = "contact" + std::to_string(pairs[p].number);
-        for (unsigned int d = 0; d < dim; ++d)
-          statistics.add(name + "_force_" + xyz[d], c.force[d]);
-        statistics.add(name + "_area", c.area);
-        statistics.add(name + "_active_nodes", c.active_nodes);
-        statistics.add(name + "_max_penetration", c.max_penetration);
-        statistics.add(name + "_max_pressure", c.max_pressure);
-        statistics.add(name + "_min_pressure", c.min_pressure);
-        for (unsigned int d = 0; d < dim; ++d)
-          statistics.add(name + "_friction_" + xyz[d], c.friction_force[d]);
-        statistics.add(name + "_sticking_nodes", c.sticking_nodes);
-        statistics.add(name + "_slipping_nodes", c.slipping_nodes);
-        statistics.add(name + "_max_slip", c.max_slip);
-        statistics.add(name + "_dissipation", c.dissipation);
-      }
-    statistics.add("contact_augmentations", report.augmentations);
-  }
-
-
-
-  void
   Simulation::add_solver_columns(const StepReport  &report,
                                  const unsigned int cutbacks)
   {
@@ -371,7 +343,10 @@ namespace DuctileContact
                        contact_dissipation);
     add_field_columns();
     if (contact)
-      add_contact_columns(report);
+      {
+        contact->add_columns(statistics);
+        statistics.add("contact_augmentations", report.augmentations);
+      }
     add_solver_columns(report, cutbacks);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       statistics.write();

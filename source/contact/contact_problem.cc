@@ -707,4 +707,29 @@ namespace DuctileContact
                               output_records[p]);
       }
   }
+
+
+  void
+  ContactProblem::add_columns(Statistics &statistics) const
+  {
+    const char *xyz[] = {"x", "y", "z"};
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        const ContactPairSummary &c = summaries[p];
+        const std::string name = "contact" + std::to_string(pairs[p].number);
+        for (unsigned int d = 0; d < dim; ++d)
+          statistics.add(name + "_force_" + xyz[d], c.force[d]);
+        statistics.add(name + "_area", c.area);
+        statistics.add(name + "_active_nodes", c.active_nodes);
+        statistics.add(name + "_max_penetration", c.max_penetration);
+        statistics.add(name + "_max_pressure", c.max_pressure);
+        statistics.add(name + "_min_pressure", c.min_pressure);
+        for (unsigned int d = 0; d < dim; ++d)
+          statistics.add(name + "_friction_" + xyz[d], c.friction_force[d]);
+        statistics.add(name + "_sticking_nodes", c.sticking_nodes);
+        statistics.add(name + "_slipping_nodes", c.slipping_nodes);
+        statistics.add(name + "_max_slip", c.max_slip);
+        statistics.add(name + "_dissipation", c.dissipation);
+      }
+  }
 } // namespace DuctileContact

@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/exceptions.h>
 #include <deal.II/lac/solver_cg.h>
@@ -83,6 +84,7 @@ namespace DuctileContact
     // and so is the direct solver's analysis.
     monolithic.reset();
     mumps.reset();
+    reuse_time = 0.;
   }
 
 
@@ -135,10 +137,7 @@ namespace DuctileContact
     const auto &bu = b.block(Block::displacement);
 
     if (parameters.type == LinearSolverType::direct)
-      {
-        solve_direct(A, xu, bu);
-        return 1;
-      }
+      return solve_direct(A, xu, bu);
 
     TrilinosWrappers::PreconditionAMG amg;
     initialize_displacement_amg(A, amg);
@@ -183,21 +182,40 @@ namespace DuctileContact
 
 
 
-  void
+  unsigned int
   LinearSolver::solve_direct(const TrilinosWrappers::SparseMatrix &A,
                              TrilinosWrappers::MPI::Vector        &x,
                              const TrilinosWrappers::MPI::Vector  &b)
   {
     if (parameters.direct_solver == DirectSolver::mumps)
       {
-        if (!mumps)
+        if (!mumps ||
+            !mumps->made_for(parameters.factorisation, parameters.ordering))
           mumps = std::make_unique<MumpsSolver>(
             discretisation.dof_handler.get_communicator(),
             parameters.factorisation,
             parameters.ordering);
+        // Old factors serve while the time spent on the iterations they
+        // need stays below that of one factorisation (then a new one pays).
+        // Wall times differ between ranks: all follow the slowest.
+        const MumpsSolver::Statistics &s = mumps->statistics();
+        const bool                     reuse =
+          parameters.reuse_iterations > 0 &&
+          Utilities::MPI::min(
+            reuse_time < s.factor_time / std::max(1u, s.factorisations) ? 1 : 0,
+            discretisation.dof_handler.get_communicator()) == 1;
+        if (reuse && mumps->has_factors_for(A.trilinos_matrix()))
+          {
+            Timer              timer;
+            const unsigned int n = solve_with_old_factors(A, x, b);
+            reuse_time += timer.wall_time();
+            if (n > 0)
+              return n;
+          }
         mumps->factorize(A.trilinos_matrix());
         mumps->solve(x.trilinos_vector(), b.trilinos_vector());
-        return;
+        reuse_time = 0.;
+        return 1;
       }
     SolverControl                                  control(1, 0.);
     TrilinosWrappers::SolverDirect::AdditionalData data(
@@ -206,6 +224,46 @@ namespace DuctileContact
                                                            : "Amesos_Mumps");
     TrilinosWrappers::SolverDirect direct(control, data);
     direct.solve(A, x, b);
+    return 1;
+  }
+
+
+
+  unsigned int
+  LinearSolver::solve_with_old_factors(const TrilinosWrappers::SparseMatrix &A,
+                                       TrilinosWrappers::MPI::Vector        &x,
+                                       const TrilinosWrappers::MPI::Vector  &b)
+  {
+    // The factors of an earlier matrix as a right preconditioner: GMRES then
+    // tests the true residual ||b - A x||.
+    struct OldFactors
+    {
+      MumpsSolver *mumps;
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        mumps->solve(dst.trilinos_vector(), src.trilinos_vector());
+      }
+    };
+    SolverControl control(parameters.reuse_iterations,
+                          parameters.relative_tolerance * b.l2_norm(),
+                          false,
+                          false);
+    SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+      control,
+      SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+        parameters.reuse_iterations + 2, true));
+    x = 0.;
+    try
+      {
+        gmres.solve(A, x, b, OldFactors{mumps.get()});
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        return 0;
+      }
+    return std::max(1u, control.last_step());
   }
 
 
@@ -403,7 +461,7 @@ namespace DuctileContact
       }
     m.x = 0.;
 
-    solve_direct(m.matrix, m.x, m.b);
+    const unsigned int n_solves = solve_direct(m.matrix, m.x, m.b);
 
     const double *flat_x = m.x.trilinos_vector()[0];
     for (unsigned int I = 0; I < n_blocks; ++I)
@@ -414,7 +472,7 @@ namespace DuctileContact
         for (int r = 0; r < xI.MyLength(); ++r)
           xI[0][r] = flat_x[m.row[I][r]];
       }
-    return 1;
+    return n_solves;
   }
 
 

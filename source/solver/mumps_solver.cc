@@ -233,6 +233,37 @@ namespace DuctileContact
 
 
 
+  bool
+  MumpsSolver::has_factors_for(const Epetra_CrsMatrix &A) const
+  {
+    bool        same = factorised;
+    std::size_t e    = 0;
+    for (int r = 0; same && r < A.NumMyRows(); ++r)
+      {
+        int     n;
+        double *values;
+        int    *indices;
+        A.ExtractMyRowView(r, n, values, indices);
+        const int i =
+          static_cast<int>(TrilinosWrappers::global_row_index(A, r)) + 1;
+        for (int k = 0; same && k < n; ++k)
+          {
+            const int j =
+              static_cast<int>(
+                TrilinosWrappers::global_column_index(A, indices[k])) +
+              1;
+            if (factorisation == Factorisation::ldlt && j < i)
+              continue;
+            same = (e < row.size() && row[e] == i && column[e] == j);
+            ++e;
+          }
+      }
+    same = same && e == row.size();
+    return Utilities::MPI::min(same ? 1 : 0, comm) == 1;
+  }
+
+
+
   void
   MumpsSolver::factorize(const Epetra_CrsMatrix &A)
   {
@@ -268,6 +299,7 @@ namespace DuctileContact
     const bool analyse = Utilities::MPI::min(same ? 1 : 0, comm) == 0;
 
     DMUMPS_STRUC_C &id = mumps->id;
+    factorised         = false;
     if (analyse)
       {
         Timer timer;
@@ -320,6 +352,7 @@ namespace DuctileContact
     id.jcn_loc = column.data();
     id.a_loc   = value.data();
     run(2, "factorisation");
+    factorised = true;
     ++stats.factorisations;
     stats.factor_time += timer.wall_time();
     stats.factor_entries = static_cast<double>(
@@ -331,7 +364,7 @@ namespace DuctileContact
   void
   MumpsSolver::solve(Epetra_MultiVector &x, const Epetra_MultiVector &b)
   {
-    AssertThrow(analysed, ExcMessage("MumpsSolver::solve before factorize"));
+    AssertThrow(factorised, ExcMessage("MumpsSolver::solve before factorize"));
     AssertThrow(b.MyLength() == static_cast<int>(owned_rows.size()) &&
                   x.MyLength() == b.MyLength(),
                 ExcMessage("vectors of another layout than the matrix"));

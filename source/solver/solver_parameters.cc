@@ -189,6 +189,14 @@ namespace DuctileContact
                "triangle only: about half the time and memory, exact only "
                "for a symmetric tangent; with an unsymmetric one Newton "
                "converges more slowly).");
+    prm.add_parameter(
+      "Factorisation reuse",
+      reuse_iterations,
+      "Direct solver = mumps: a solve first tries GMRES preconditioned by "
+      "the factors of an earlier matrix of the same pattern, with at most "
+      "this many iterations to Relative tolerance; only if that fails is "
+      "the matrix factorised again. 0: factorise on every solve.",
+      Patterns::Integer(0, 100));
     prm.add_parameter("Relative tolerance",
                       relative_tolerance,
                       "Iterative solvers stop when the residual is below "

@@ -62,8 +62,6 @@ namespace DuctileContact
     void
     add_field_columns();
     void
-    add_contact_columns(const StepReport &report);
-    void
     add_solver_columns(const StepReport &report, const unsigned int cutbacks);
     /// Whether block @p b has unknowns.
     bool

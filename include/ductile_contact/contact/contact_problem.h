@@ -11,6 +11,7 @@
 #include <ductile_contact/contact/contact_surface.h>
 #include <ductile_contact/contact/nodal_contact.h>
 #include <ductile_contact/materials/body_parameters.h>
+#include <ductile_contact/output/statistics.h>
 
 #include <deque>
 #include <map>
@@ -148,6 +149,11 @@ namespace DuctileContact
     {
       return summaries;
     }
+
+    /// Adds the columns contact<number>_... of every pair (its summary
+    /// after the last assembly) to the statistics row.
+    void
+    add_columns(Statistics &statistics) const;
 
     const std::deque<ContactPairParameters> &pairs;
 

@@ -73,11 +73,20 @@ namespace DuctileContact
                        dealii::TrilinosWrappers::MPI::BlockVector        &x,
                        const dealii::TrilinosWrappers::MPI::BlockVector  &b);
 
-    /// x = A^{-1} b by the Direct solver (MUMPS keeps its analysis).
-    void
+    /// x = A^{-1} b by the Direct solver (MUMPS keeps its analysis, and
+    /// with `Factorisation reuse` its factors while they serve); returns the
+    /// number of applications of the factors.
+    unsigned int
     solve_direct(const dealii::TrilinosWrappers::SparseMatrix &A,
                  dealii::TrilinosWrappers::MPI::Vector        &x,
                  const dealii::TrilinosWrappers::MPI::Vector  &b);
+
+    /// GMRES preconditioned by the last MUMPS factors; 0 if it did not
+    /// reach the tolerance within `Factorisation reuse` iterations.
+    unsigned int
+    solve_with_old_factors(const dealii::TrilinosWrappers::SparseMatrix &A,
+                           dealii::TrilinosWrappers::MPI::Vector        &x,
+                           const dealii::TrilinosWrappers::MPI::Vector  &b);
 
     /// The direct solver on the monolithic copy of the coupled system.
     unsigned int
@@ -138,5 +147,9 @@ namespace DuctileContact
     /// Direct solver = mumps: kept between solves (its analysis is redone
     /// only when the pattern changes).
     std::unique_ptr<MumpsSolver> mumps;
+
+    /// Wall time [s] of the solves with old factors since the last
+    /// factorisation.
+    double reuse_time = 0.;
   };
 } // namespace DuctileContact

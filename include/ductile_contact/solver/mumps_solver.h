@@ -70,6 +70,11 @@ namespace DuctileContact
     void
     factorize(const Epetra_CrsMatrix &A);
 
+    /// Whether factors exist and were made from a matrix with the pattern
+    /// of @p A (collective; O(entries), no copy).
+    bool
+    has_factors_for(const Epetra_CrsMatrix &A) const;
+
     /// x = A^{-1} b with the last factorisation; @p b and @p x have the row
     /// map of A.
     void
@@ -79,6 +84,13 @@ namespace DuctileContact
     statistics() const
     {
       return stats;
+    }
+
+    /// Whether this solver was made with these settings.
+    bool
+    made_for(const Factorisation f, const DirectOrdering o) const
+    {
+      return f == factorisation && o == ordering;
     }
 
   private:
@@ -103,9 +115,8 @@ namespace DuctileContact
     /// Owned triplets, 1-based global indices (upper triangle for ldlt).
     std::vector<int>    row, column;
     std::vector<double> value;
-    /// Position in the row-major entries of A of each triplet.
-    std::vector<int> source;
-    bool             analysed = false;
+    bool                analysed   = false;
+    bool                factorised = false;
 
     /// Global rows owned here (in the order of the vectors' local indices),
     /// and on rank 0 the counts and offsets of every rank's rows.

@@ -152,14 +152,17 @@ namespace DuctileContact
 
   struct LinearSolverParameters
   {
-    LinearSolverType type                  = LinearSolverType::direct;
-    DirectSolver     direct_solver         = DirectSolver::mumps;
-    DirectOrdering   ordering              = DirectOrdering::metis;
-    Factorisation    factorisation         = Factorisation::lu;
-    double           relative_tolerance    = 1.e-8;
-    unsigned int     max_iterations        = 2000;
-    double           aggregation_threshold = 1.e-4;
-    unsigned int     smoother_sweeps       = 2;
+    LinearSolverType type          = LinearSolverType::direct;
+    DirectSolver     direct_solver = DirectSolver::mumps;
+    DirectOrdering   ordering      = DirectOrdering::metis;
+    Factorisation    factorisation = Factorisation::lu;
+    /// Direct solver = mumps: GMRES iterations preconditioned by the last
+    /// factors before the matrix is factorised again (0: every solve).
+    unsigned int reuse_iterations      = 0;
+    double       relative_tolerance    = 1.e-8;
+    unsigned int max_iterations        = 2000;
+    double       aggregation_threshold = 1.e-4;
+    unsigned int smoother_sweeps       = 2;
     /// amg | direct: approximate inverse of the s-s block (coupled systems).
     PhaseFieldPreconditioner phase_field_preconditioner =
       PhaseFieldPreconditioner::amg;
