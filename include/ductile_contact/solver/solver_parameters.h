@@ -158,7 +158,7 @@ namespace DuctileContact
     Factorisation    factorisation = Factorisation::lu;
     /// Direct solver = mumps: GMRES iterations preconditioned by the last
     /// factors before the matrix is factorised again (0: every solve).
-    unsigned int reuse_iterations      = 0;
+    unsigned int reuse_iterations      = 20;
     double       relative_tolerance    = 1.e-8;
     unsigned int max_iterations        = 2000;
     double       aggregation_threshold = 1.e-4;
