@@ -258,11 +258,11 @@ namespace
 
     // New values, same pattern: the monolithic copy must follow the values.
     assemble(d, d.hanging_node_constraints, 2., K);
-    parameters.type          = LinearSolverType::direct;
-    parameters.direct_solver = DirectSolver::mumps;
+    parameters.type             = LinearSolverType::direct;
+    parameters.direct_solver    = DirectSolver::mumps;
+    parameters.reuse_iterations = 20;
     check("direct after a change of values", 0);
     // A small change: GMRES with the factors of the last matrix.
-    parameters.reuse_iterations = 20;
     assemble(d, d.hanging_node_constraints, 2.1, K);
     {
       K.vmult(b, x_exact);

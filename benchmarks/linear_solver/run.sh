@@ -20,7 +20,7 @@ variants=(
   "mumps-pord:Type = direct;Direct solver = mumps;Ordering = pord"
   "mumps-metis:Type = direct;Direct solver = mumps;Ordering = metis"
   "mumps-metis-ldlt:Type = direct;Direct solver = mumps;Factorisation = ldlt"
-  "mumps-metis-reuse:Type = direct;Direct solver = mumps;Factorisation reuse = 20"
+  "mumps-metis-reuse:Type = direct;Direct solver = mumps;Factorisation reuse = 60"
   "gmres-amg:Type = gmres-amg"
 )
 scenes=("$@")

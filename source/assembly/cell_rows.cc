@@ -218,37 +218,53 @@ namespace DuctileContact
 
 
 
-  double
-  add_crack_functional_rows(const FEValues<dim>  &fe_values,
-                            const Discretisation &discretisation,
-                            const BodyParameters &body,
-                            const Vector<double> &cell_values,
-                            const LocalDofs      &dofs,
-                            const bool            tangent,
-                            FullMatrix<double>   &c0ip_matrix,
-                            LocalRows            &rows)
+  FullMatrix<double>
+  crack_functional_matrix(const FEValues<dim>  &fe_values,
+                          const Discretisation &discretisation,
+                          const BodyParameters &body,
+                          const LocalDofs      &dofs)
   {
-    const unsigned int n_dofs = rows.f_int.size();
-    c0ip_matrix.reinit(n_dofs, n_dofs);
+    const unsigned int n_dofs = fe_values.get_fe().n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(n_dofs, n_dofs);
     add_c0ip_cell_terms(fe_values,
                         discretisation.phase_field,
                         crack_coefficients(body, discretisation.degree),
-                        c0ip_matrix);
-    double energy = 0;
-    for (const unsigned int k : dofs.s)
+                        cell_matrix);
+    const unsigned int n_s = dofs.s.size();
+    FullMatrix<double> a_K(n_s, n_s);
+    for (unsigned int k = 0; k < n_s; ++k)
+      for (unsigned int l = 0; l < n_s; ++l)
+        a_K(k, l) = cell_matrix(dofs.s[k], dofs.s[l]);
+    return a_K;
+  }
+
+
+
+  double
+  add_crack_functional_rows(const FullMatrix<double> &a_K,
+                            const Vector<double>     &cell_values,
+                            const LocalDofs          &dofs,
+                            const bool                tangent,
+                            LocalRows                &rows)
+  {
+    const unsigned int n_s    = dofs.s.size();
+    double             energy = 0;
+    for (unsigned int k = 0; k < n_s; ++k)
       {
         double sum = 0;
-        for (const unsigned int l : dofs.s)
+        for (unsigned int l = 0; l < n_s; ++l)
           {
-            sum += c0ip_matrix(k, l) * cell_values(l);
+            sum += a_K(k, l) * cell_values(dofs.s[l]);
             // s is known to eps in absolute terms (s <= 1).
-            rows.magnitude(k) += std::abs(c0ip_matrix(k, l));
+            rows.magnitude(dofs.s[k]) += std::abs(a_K(k, l));
           }
-        rows.f_int(k) += sum;
-        energy += 0.5 * cell_values(k) * sum;
+        rows.f_int(dofs.s[k]) += sum;
+        energy += 0.5 * cell_values(dofs.s[k]) * sum;
       }
     if (tangent)
-      rows.matrix.add(1., c0ip_matrix);
+      for (unsigned int k = 0; k < n_s; ++k)
+        for (unsigned int l = 0; l < n_s; ++l)
+          rows.matrix(dofs.s[k], dofs.s[l]) += a_K(k, l);
     return energy;
   }
 } // namespace DuctileContact

@@ -491,13 +491,10 @@ namespace DuctileContact
         scratch.cell_values.reinit(rows.f_int.size());
         cell->get_dof_values(*pass.u, scratch.cell_values);
         copy.sums.fracture_energy +=
-          add_crack_functional_rows(fe_values,
-                                    discretisation,
-                                    body,
+          add_crack_functional_rows(crack_matrix(cell, body, dofs, scratch),
                                     scratch.cell_values,
                                     dofs,
                                     pass.targets && pass.targets->tangent,
-                                    scratch.c0ip_matrix,
                                     rows);
       }
     reduce_rows(rows, dofs, copy.sums);
@@ -540,6 +537,28 @@ namespace DuctileContact
                                        T[dofs.u_component[k]] * fv.JxW(q);
             }
         }
+  }
+
+
+
+  const FullMatrix<double> &
+  SystemAssembler::crack_matrix(
+    const DoFHandler<dim>::active_cell_iterator &cell,
+    const BodyParameters                        &body,
+    const LocalDofs                             &dofs,
+    CellScratch                                 &scratch) const
+  {
+    FullMatrix<double> &a_K = crack_matrices[cell->active_cell_index()];
+    if (a_K.empty())
+      {
+        scratch.crack_values.reinit(cell);
+        a_K =
+          crack_functional_matrix(scratch.crack_values.get_present_fe_values(),
+                                  discretisation,
+                                  body,
+                                  dofs);
+      }
+    return a_K;
   }
 
 

@@ -36,11 +36,16 @@ namespace DuctileContact
     for (const BoundaryCondition &bc : boundary_conditions)
       if (bc.has_traction)
         tractions[bc.boundary_id] = &bc;
+    mesh_changed = discretisation.triangulation.signals.any_change.connect(
+      [this]() { crack_matrices.clear(); });
   }
 
 
 
-  SystemAssembler::~SystemAssembler() = default;
+  SystemAssembler::~SystemAssembler()
+  {
+    mesh_changed.disconnect();
+  }
 
 
 
@@ -151,6 +156,8 @@ namespace DuctileContact
     const Iterator end(IteratorFilters::LocallyOwnedCell(), dof_handler.end());
     if (!scratch)
       scratch = std::make_unique<CellScratch>(discretisation);
+    // Sized before the loop: the workers only fill their own cell's entry.
+    crack_matrices.resize(discretisation.triangulation.n_active_cells());
     if (MultithreadInfo::n_threads() == 1)
       {
         // The cached scratch directly: a copy would build the evaluation

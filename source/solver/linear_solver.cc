@@ -1,6 +1,5 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/timer.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/exceptions.h>
 #include <deal.II/lac/solver_cg.h>
@@ -84,7 +83,9 @@ namespace DuctileContact
     // and so is the direct solver's analysis.
     monolithic.reset();
     mumps.reset();
-    reuse_time = 0.;
+    reuse_iterations_left = 0;
+    reuses_to_skip        = 0;
+    skipped_reuses        = 0;
   }
 
 
@@ -195,26 +196,36 @@ namespace DuctileContact
             discretisation.dof_handler.get_communicator(),
             parameters.factorisation,
             parameters.ordering);
-        // Old factors serve while the time spent on the iterations they
-        // need stays below that of one factorisation (then a new one pays).
-        // Wall times differ between ranks: all follow the slowest.
-        const MumpsSolver::Statistics &s = mumps->statistics();
-        const bool                     reuse =
-          parameters.reuse_iterations > 0 &&
-          Utilities::MPI::min(
-            reuse_time < s.factor_time / std::max(1u, s.factorisations) ? 1 : 0,
-            discretisation.dof_handler.get_communicator()) == 1;
-        if (reuse && mumps->has_factors_for(A.trilinos_matrix()))
+        // Old factors serve until GMRES has made `Factorisation reuse`
+        // iterations with them in all, or fails within those left. When
+        // the factors of the previous matrix fail, the next 1, 2, 4, ...
+        // solves factorise at once. Counts, not times: the same run takes
+        // the same path.
+        if (reuse_iterations_left > 0 && skipped_reuses >= reuses_to_skip &&
+            mumps->has_factors_for(A.trilinos_matrix()))
           {
-            Timer              timer;
+            const bool fresh =
+              reuse_iterations_left == parameters.reuse_iterations;
             const unsigned int n = solve_with_old_factors(A, x, b);
-            reuse_time += timer.wall_time();
             if (n > 0)
-              return n;
+              {
+                reuse_iterations_left -= std::min(n, reuse_iterations_left);
+                reuses_to_skip = 0;
+                return n;
+              }
+            // The matrix changes too fast for reuse now: back off. Older
+            // factors may just be old.
+            if (fresh)
+              {
+                reuses_to_skip = std::max(1u, 2 * reuses_to_skip);
+                skipped_reuses = 0;
+              }
           }
+        else
+          ++skipped_reuses;
         mumps->factorize(A.trilinos_matrix());
         mumps->solve(x.trilinos_vector(), b.trilinos_vector());
-        reuse_time = 0.;
+        reuse_iterations_left = parameters.reuse_iterations;
         return 1;
       }
     SolverControl                                  control(1, 0.);
@@ -246,14 +257,14 @@ namespace DuctileContact
         mumps->solve(dst.trilinos_vector(), src.trilinos_vector());
       }
     };
-    SolverControl control(parameters.reuse_iterations,
+    SolverControl                              control(reuse_iterations_left,
                           parameters.relative_tolerance * b.l2_norm(),
                           false,
                           false);
     SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
       control,
-      SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
-        parameters.reuse_iterations + 2, true));
+      SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(gmres_restart,
+                                                                 true));
     x = 0.;
     try
       {

@@ -193,11 +193,12 @@ namespace DuctileContact
       "Factorisation reuse",
       reuse_iterations,
       "Direct solver = mumps: a solve first tries GMRES preconditioned by "
-      "the factors of an earlier matrix of the same pattern, with at most "
-      "this many iterations to Relative tolerance; the matrix is "
-      "factorised again when that fails, or when such iterations have "
-      "cost more time since the last factorisation than one "
-      "factorisation. 0: factorise on every solve. The answer is the same "
+      "the factors of an earlier matrix of the same pattern, to Relative "
+      "tolerance; the matrix is factorised again when that fails within "
+      "the iterations left, or once the factors have served this many "
+      "GMRES iterations in all. When the factors of the previous matrix fail, "
+      "the next 1, 2, 4, ... solves factorise directly. 0: factorise on every "
+      "solve. The answer is the same "
       "(to Relative tolerance in each linear solve); 2-5x faster linear "
       "solves measured (benchmarks/linear_solver).",
       Patterns::Integer(0, 100));

@@ -106,15 +106,22 @@ namespace DuctileContact
                        const bool              tangent,
                        LocalRows              &rows);
 
-  /// The crack functional's cell terms a_K(s, ds) (linear in s) with the
-  /// local values @p s_values of all cell DoFs; returns a_K(s, s)/2.
+  /// The s-s block of the crack functional's cell matrix a_K (phase_field/
+  /// c0ip.h; indexed by the positions in @p dofs.s): it depends on the cell
+  /// and l_f only. @p fe_values needs values, gradients and hessians.
+  dealii::FullMatrix<double>
+  crack_functional_matrix(const dealii::FEValues<dim> &fe_values,
+                          const Discretisation        &discretisation,
+                          const BodyParameters        &body,
+                          const LocalDofs             &dofs);
+
+  /// The crack functional's cell terms a_K(s, ds) (linear in s) from its
+  /// s-s block @p a_K with the local values @p s_values of all cell DoFs;
+  /// returns a_K(s, s)/2.
   double
-  add_crack_functional_rows(const dealii::FEValues<dim>  &fe_values,
-                            const Discretisation         &discretisation,
-                            const BodyParameters         &body,
-                            const dealii::Vector<double> &cell_values,
-                            const LocalDofs              &dofs,
-                            const bool                    tangent,
-                            dealii::FullMatrix<double>   &c0ip_matrix,
-                            LocalRows                    &rows);
+  add_crack_functional_rows(const dealii::FullMatrix<double> &a_K,
+                            const dealii::Vector<double>     &cell_values,
+                            const LocalDofs                  &dofs,
+                            const bool                        tangent,
+                            LocalRows                        &rows);
 } // namespace DuctileContact

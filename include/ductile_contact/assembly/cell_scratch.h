@@ -18,7 +18,8 @@ namespace DuctileContact
   /**
    * Scratch of one cell: evaluation objects and the solution at the
    * quadrature points. Elastic cells need gradients only; cells with alpha
-   * or s also values and (for the bi-Laplacian) hessians. A copy builds
+   * or s also values; hessians (for the bi-Laplacian) only the one-off
+   * crack functional matrices of a mesh. A copy builds
    * its own evaluation objects (one per thread).
    */
   struct CellScratch
@@ -33,7 +34,12 @@ namespace DuctileContact
                          discretisation.fe_collection,
                          discretisation.quadrature,
                          dealii::update_values | dealii::update_gradients |
-                           dealii::update_hessians | dealii::update_JxW_values)
+                           dealii::update_JxW_values)
+        , crack_values(discretisation.mapping,
+                       discretisation.fe_collection,
+                       discretisation.quadrature,
+                       dealii::update_values | dealii::update_gradients |
+                         dealii::update_hessians | dealii::update_JxW_values)
         , face_values(discretisation.mapping,
                       discretisation.fe_collection,
                       discretisation.face_quadrature,
@@ -59,8 +65,11 @@ namespace DuctileContact
     {
     }
 
-    const Discretisation         &discretisation;
-    dealii::hp::FEValues<dim>     elastic_values, coupled_values;
+    const Discretisation     &discretisation;
+    dealii::hp::FEValues<dim> elastic_values, coupled_values;
+    /// With hessians, for the crack functional's cell matrices (built once
+    /// per mesh, SystemAssembler::crack_matrix()).
+    dealii::hp::FEValues<dim>     crack_values;
     dealii::hp::FEFaceValues<dim> face_values;
     std::vector<std::unique_ptr<dealii::FEInterfaceValues<dim>>>
       interface_values;
@@ -72,7 +81,7 @@ namespace DuctileContact
     const PointHistory                  default_history;
     dealii::Vector<double>              cell_values;
     PointShapes                         shapes;
-    dealii::FullMatrix<double>          c0ip_matrix, face_matrix;
+    dealii::FullMatrix<double>          face_matrix;
     /// Of the face being assembled: its s DoFs (interface numbering) and
     /// their values.
     std::vector<unsigned int> face_s_dofs;

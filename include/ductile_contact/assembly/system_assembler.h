@@ -12,6 +12,7 @@
 #include <ductile_contact/materials/body_parameters.h>
 #include <ductile_contact/materials/degradation.h>
 
+#include <boost/signals2/connection.hpp>
 #include <deque>
 #include <map>
 #include <memory>
@@ -184,6 +185,22 @@ namespace DuctileContact
     /// With more than one thread WorkStream copies the scratch per thread.
     mutable std::unique_ptr<CellScratch> scratch;
     mutable std::unique_ptr<CellCopy>    copy_data;
+    /// The s-s block of the crack functional's cell matrix a_K of @p cell
+    /// (crack_functional_matrix()), computed on first use after a change of
+    /// the mesh and kept: it depends on the cell and l_f only.
+    const dealii::FullMatrix<double> &
+    crack_matrix(const dealii::DoFHandler<dim>::active_cell_iterator &cell,
+                 const BodyParameters                                &body,
+                 const LocalDofs                                     &dofs,
+                 CellScratch &scratch) const;
+
+    /// crack_matrix() per active cell index (empty: not computed yet), and
+    /// the number of active cells it was sized for; cleared when the mesh
+    /// changes. Each cell's entry is written only by the pass over that
+    /// cell, so threads do not share entries.
+    mutable std::vector<dealii::FullMatrix<double>> crack_matrices;
+    boost::signals2::connection                     mesh_changed;
+
     /// Traction boundaries, looked up per face.
     std::map<dealii::types::boundary_id, const BoundaryCondition *> tractions;
   };

@@ -82,7 +82,7 @@ namespace DuctileContact
                  const dealii::TrilinosWrappers::MPI::Vector  &b);
 
     /// GMRES preconditioned by the last MUMPS factors; 0 if it did not
-    /// reach the tolerance within `Factorisation reuse` iterations.
+    /// reach the tolerance within the iterations left to them.
     unsigned int
     solve_with_old_factors(const dealii::TrilinosWrappers::SparseMatrix &A,
                            dealii::TrilinosWrappers::MPI::Vector        &x,
@@ -148,8 +148,15 @@ namespace DuctileContact
     /// only when the pattern changes).
     std::unique_ptr<MumpsSolver> mumps;
 
-    /// Wall time [s] of the solves with old factors since the last
-    /// factorisation.
-    double reuse_time = 0.;
+    /// GMRES iterations the current factors may still serve (`Factorisation
+    /// reuse` after a factorisation).
+    unsigned int reuse_iterations_left = 0;
+
+    /// Krylov vectors of the GMRES with old factors before it restarts.
+    static constexpr unsigned int gmres_restart = 22;
+
+    /// Solves to factorise at once after old factors failed (doubling with
+    /// each failure in a row), and those done so far.
+    unsigned int reuses_to_skip = 0, skipped_reuses = 0;
   };
 } // namespace DuctileContact
