@@ -1,5 +1,7 @@
 #pragma once
 
+#include <ductile_contact/solver/solver_parameters.h>
+
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
 #include <memory>
@@ -9,28 +11,6 @@
 
 namespace DuctileContact
 {
-  /// Linear solver/Ordering: the fill-reducing order of the direct solver.
-  enum class DirectOrdering
-  {
-    /// METIS nested dissection of the symmetrised graph, computed by us
-    /// and handed to MUMPS as its pivot order (Debian's MUMPS has no METIS).
-    metis,
-    /// MUMPS's own choice among the orderings it was built with.
-    automatic,
-    amd,
-    pord
-  };
-
-  /// Linear solver/Factorisation: how the matrix is factorised.
-  enum class Factorisation
-  {
-    /// K = L U (any matrix).
-    lu,
-    /// K = L D L^T from the upper triangle: half the work and memory, for a
-    /// symmetric tangent only (an unsymmetric one is solved inexactly).
-    ldlt
-  };
-
   /**
    * A sparse direct solver for a distributed Epetra matrix through the C
    * interface of MUMPS (the matrix handed over distributed, one triplet per

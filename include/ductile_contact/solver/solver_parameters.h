@@ -3,7 +3,6 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <ductile_contact/core/option.h>
-#include <ductile_contact/solver/mumps_solver.h>
 
 #include <string>
 
@@ -114,6 +113,28 @@ namespace DuctileContact
       {DirectSolver::amesos_klu, "Amesos_Klu"}};
     return t;
   }
+
+  /// Linear solver/Ordering: the fill-reducing order of the direct solver.
+  enum class DirectOrdering
+  {
+    /// METIS nested dissection of the symmetrised graph, computed by us
+    /// and handed to MUMPS as its pivot order (Debian's MUMPS has no METIS).
+    metis,
+    /// MUMPS's own choice among the orderings it was built with.
+    automatic,
+    amd,
+    pord
+  };
+
+  /// Linear solver/Factorisation: how the matrix is factorised.
+  enum class Factorisation
+  {
+    /// K = L U (any matrix).
+    lu,
+    /// K = L D L^T from the upper triangle: half the work and memory, for a
+    /// symmetric tangent only (an unsymmetric one is solved inexactly).
+    ldlt
+  };
 
   inline const NameTable<DirectOrdering> &
   direct_ordering_names()
