@@ -233,31 +233,51 @@ namespace DuctileContact
 
 
 
+  namespace
+  {
+    /// Calls f(i, j, value) for every locally owned entry of @p A that
+    /// MUMPS is given (1-based global indices; the upper triangle for
+    /// ldlt), row by row.
+    template <typename F>
+    void
+    for_each_triplet(const Epetra_CrsMatrix &A,
+                     const Factorisation     factorisation,
+                     const F                &f)
+    {
+      for (int r = 0; r < A.NumMyRows(); ++r)
+        {
+          int     n;
+          double *values;
+          int    *indices;
+          A.ExtractMyRowView(r, n, values, indices);
+          const int i =
+            static_cast<int>(TrilinosWrappers::global_row_index(A, r)) + 1;
+          for (int k = 0; k < n; ++k)
+            {
+              const int j =
+                static_cast<int>(
+                  TrilinosWrappers::global_column_index(A, indices[k])) +
+                1;
+              if (factorisation == Factorisation::ldlt && j < i)
+                continue;
+              f(i, j, values[k]);
+            }
+        }
+    }
+  } // namespace
+
+
+
   bool
   MumpsSolver::has_factors_for(const Epetra_CrsMatrix &A) const
   {
     bool        same = factorised;
     std::size_t e    = 0;
-    for (int r = 0; same && r < A.NumMyRows(); ++r)
-      {
-        int     n;
-        double *values;
-        int    *indices;
-        A.ExtractMyRowView(r, n, values, indices);
-        const int i =
-          static_cast<int>(TrilinosWrappers::global_row_index(A, r)) + 1;
-        for (int k = 0; same && k < n; ++k)
-          {
-            const int j =
-              static_cast<int>(
-                TrilinosWrappers::global_column_index(A, indices[k])) +
-              1;
-            if (factorisation == Factorisation::ldlt && j < i)
-              continue;
-            same = (e < row.size() && row[e] == i && column[e] == j);
-            ++e;
-          }
-      }
+    if (same)
+      for_each_triplet(A, factorisation, [&](const int i, const int j, double) {
+        same = same && e < row.size() && row[e] == i && column[e] == j;
+        ++e;
+      });
     same = same && e == row.size();
     return Utilities::MPI::min(same ? 1 : 0, comm) == 1;
   }
@@ -274,27 +294,13 @@ namespace DuctileContact
     new_column.reserve(A.NumMyNonzeros());
     value.clear();
     value.reserve(A.NumMyNonzeros());
-    for (int r = 0; r < A.NumMyRows(); ++r)
-      {
-        int     n;
-        double *values;
-        int    *indices;
-        A.ExtractMyRowView(r, n, values, indices);
-        const int i =
-          static_cast<int>(TrilinosWrappers::global_row_index(A, r)) + 1;
-        for (int k = 0; k < n; ++k)
-          {
-            const int j =
-              static_cast<int>(
-                TrilinosWrappers::global_column_index(A, indices[k])) +
-              1;
-            if (factorisation == Factorisation::ldlt && j < i)
-              continue;
-            new_row.push_back(i);
-            new_column.push_back(j);
-            value.push_back(values[k]);
-          }
-      }
+    for_each_triplet(A,
+                     factorisation,
+                     [&](const int i, const int j, const double v) {
+                       new_row.push_back(i);
+                       new_column.push_back(j);
+                       value.push_back(v);
+                     });
     const bool same    = analysed && new_row == row && new_column == column;
     const bool analyse = Utilities::MPI::min(same ? 1 : 0, comm) == 0;
 
