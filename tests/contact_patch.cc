@@ -15,11 +15,6 @@ using namespace dealii;
 
 namespace
 {
-  const std::string material = R"(
-  set Shear modulus = 1e9
-  set Bulk modulus  = 2e9
-)";
-
   std::string
   patch_prm(const unsigned int slave, const unsigned int master)
   {
@@ -57,38 +52,6 @@ end
 )";
   }
 
-  const std::string single_block_prm = R"(
-subsection Mesh
-  set Scene = box
-  subsection Box
-    set Upper corner = 1, 1, 2
-    set Subdivisions = 2, 2, 4
-  end
-end
-subsection Body 0)" + material + R"(end
-subsection Boundary conditions
-  set Boundary ids = 0, 2, 4, 5
-end
-subsection Boundary 0
-  set Constrained components = x
-end
-subsection Boundary 2
-  set Constrained components = y
-end
-subsection Boundary 4
-  set Constrained components = z
-end
-subsection Boundary 5
-  set Traction = 0; 0; -1e6*t
-end
-subsection Load stepping
-  set End time  = 1
-  set Time step = 0.5
-end
-subsection Newton
-  set Relative tolerance = 1e-11
-end
-)";
 } // namespace
 
 int
@@ -97,7 +60,8 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out = Testing::open_output();
 
-  const auto   block   = Testing::run_scene(single_block_prm, "single_block");
+  const auto   block   = Testing::run_scene(Testing::contact_patch_single_block_prm(),
+                                             "single_block");
   const double top_uz  = block.at("u5_z").back();
   const double lateral = 1. + 2. * block.at("u5_x").back();
   const double p_expected = 1e6 / (lateral * lateral);

@@ -181,6 +181,51 @@ subsection Contact pair 1
   }
 
   /**
+   * .prm text of the single 1 x 1 x 2 block of the contact patch test
+   * (contact_patch, contact_semi_smooth): the state both cubes must reach,
+   * symmetry planes x = 0, y = 0, u_z = 0 at the bottom, 1 MPa on top.
+   */
+  inline std::string
+  contact_patch_single_block_prm()
+  {
+    return R"(
+subsection Mesh
+  set Scene = box
+  subsection Box
+    set Upper corner = 1, 1, 2
+    set Subdivisions = 2, 2, 4
+  end
+end
+subsection Body 0
+  set Shear modulus = 1e9
+  set Bulk modulus  = 2e9
+end
+subsection Boundary conditions
+  set Boundary ids = 0, 2, 4, 5
+end
+subsection Boundary 0
+  set Constrained components = x
+end
+subsection Boundary 2
+  set Constrained components = y
+end
+subsection Boundary 4
+  set Constrained components = z
+end
+subsection Boundary 5
+  set Traction = 0; 0; -1e6*t
+end
+subsection Load stepping
+  set End time  = 1
+  set Time step = 0.5
+end
+subsection Newton
+  set Relative tolerance = 1e-11
+end
+)";
+  }
+
+  /**
    * Hertz fit of nodal contact pressures: least squares of
    * p^2 = p0^2 (1 - r^2/a^2) over the nodes with p > 0 and r^2 <= @p r2_max
    * (@p r2: squared distance of each node from the centre of the contact).

@@ -70,6 +70,22 @@ namespace DuctileContact
       "pressures are point values of the pressure field) or standard "
       "(Phi_j = N_j; the nodal coefficients of quadratic faces oscillate "
       "between vertex and mid-side nodes where the pressure varies).");
+    add_option(
+      prm,
+      "Enforcement",
+      enforcement,
+      contact_enforcement_names(),
+      "How the contact conditions are enforced: augmented Lagrangian "
+      "(penalty eps_N on the weighted gaps, Newton for fixed multipliers, "
+      "Uzawa updates until the penetration is below the tolerance; "
+      "friction regularised by eps_T) or semi-smooth Newton (the dual "
+      "multipliers condensed from the slave rows; active set, stick and "
+      "slip resolved in the one Newton loop by complementarity functions "
+      "with c_N = eps_N and c_T = eps_T; zero weighted gap on the active "
+      "set, exact stick; needs the dual multiplier basis and a slave "
+      "surface without hanging nodes; a slave DoF fixed by a Dirichlet "
+      "condition transmits no contact traction, which suits symmetry "
+      "planes and rollers normal to the surface).");
     prm.add_parameter("Maximum augmentations",
                       max_augmentations,
                       "Multiplier (Uzawa) updates per load step before the "
@@ -92,5 +108,11 @@ namespace DuctileContact
                 s + "Penetration tolerance",
                 std::to_string(penetration_tolerance),
                 "a positive number");
+    check_input(enforcement != ContactEnforcement::semi_smooth_newton ||
+                  multiplier_basis == MultiplierBasis::dual,
+                s + "Multiplier basis",
+                name_of(multiplier_basis_names(), multiplier_basis),
+                "dual with Enforcement = semi-smooth Newton (the "
+                "multipliers are condensed with the diagonal D)");
   }
 } // namespace DuctileContact

@@ -86,6 +86,8 @@ namespace DuctileContact
         const double h    = pair.slave.smallest_face_size();
         pair.index        = p;
         pair.dual         = prm.multiplier_basis == MultiplierBasis::dual;
+        pair.semi_smooth =
+          prm.enforcement == ContactEnforcement::semi_smooth_newton;
         pair.law.penalty  = prm.penalty_factor * E / h;
         pair.law.friction = prm.friction_coefficient;
         pair.law.tangential_penalty = prm.tangential_penalty_factor * E / h;
@@ -261,24 +263,39 @@ namespace DuctileContact
     extend_constraints(constraints, all_constraints);
     std::vector<unsigned int>            s, m;
     std::vector<types::global_dof_index> indices;
+    std::vector<types::global_dof_index> master_rows;
     for (const Pair &pair : data)
-      for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
-        {
-          if (!discretisation.locally_owned_dofs.is_element(
-                pair.slave.nodes[j].dofs[0]))
-            continue;
-          coupled_nodes(pair, j, s, m);
-          indices.clear();
-          for (const unsigned int k : s)
-            indices.insert(indices.end(),
-                           pair.slave.nodes[k].dofs.begin(),
-                           pair.slave.nodes[k].dofs.end());
-          for (const unsigned int l : m)
-            indices.insert(indices.end(),
-                           pair.master.nodes[l].dofs.begin(),
-                           pair.master.nodes[l].dofs.end());
-          all_constraints.add_entries_local_to_global(indices, sp, false);
-        }
+      {
+        // Semi-smooth Newton: the master rows take the bulk rows of the
+        // slave nodes (condense()).
+        const auto columns = pair.semi_smooth ?
+                               slave_row_columns(pair) :
+                               std::vector<std::vector<types::global_dof_index>>();
+        for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
+          {
+            if (!discretisation.locally_owned_dofs.is_element(
+                  pair.slave.nodes[j].dofs[0]))
+              continue;
+            coupled_nodes(pair, j, s, m);
+            indices.clear();
+            for (const unsigned int k : s)
+              indices.insert(indices.end(),
+                             pair.slave.nodes[k].dofs.begin(),
+                             pair.slave.nodes[k].dofs.end());
+            master_rows.clear();
+            for (const unsigned int l : m)
+              master_rows.insert(master_rows.end(),
+                                 pair.master.nodes[l].dofs.begin(),
+                                 pair.master.nodes[l].dofs.end());
+            indices.insert(indices.end(), master_rows.begin(), master_rows.end());
+            all_constraints.add_entries_local_to_global(indices, sp, false);
+            if (pair.semi_smooth && !m.empty())
+              all_constraints.add_entries_local_to_global(master_rows,
+                                                          columns[j],
+                                                          sp,
+                                                          false);
+          }
+      }
   }
 
 
@@ -347,11 +364,7 @@ namespace DuctileContact
           }
       }
 
-    // Aggregates and the nodal contact law.
-    ContactPairSummary &summary = summaries[pair.index];
-    summary                     = ContactPairSummary();
-    summary.min_pressure        = std::numeric_limits<double>::max();
-    pair.step_dissipation       = 0.;
+    // Aggregates.
     for (unsigned int j = 0; j < n; ++j)
       {
         NodalAggregates &a = pair.aggregates[j];
@@ -366,12 +379,48 @@ namespace DuctileContact
             a.G += m * master.nodes[l].current;
             a.H -= m * (master.nodes[l].current - pair.master_committed[l]);
           }
-        // A node that only touches the overlap at its rim (or not at all)
-        // carries no contact.
-        if (!(a.area > 1e-10 * pair.face_size * pair.face_size))
+      }
+  }
+
+
+
+  bool
+  ContactProblem::Pair::carries_contact(const unsigned int j) const
+  {
+    // A node that only touches the overlap at its rim (or not at all)
+    // carries no contact.
+    return aggregates[j].area > 1e-10 * face_size * face_size;
+  }
+
+
+
+  void
+  ContactProblem::apply_law(Pair &pair)
+  {
+    for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
+      if (pair.carries_contact(j))
+        pair.nodal[j] = nodal_contact(pair.aggregates[j],
+                                      pair.multiplier[j],
+                                      pair.committed_traction[j],
+                                      pair.law);
+    summarise(pair);
+  }
+
+
+
+  void
+  ContactProblem::summarise(Pair &pair)
+  {
+    ContactPairSummary &summary = summaries[pair.index];
+    summary                     = ContactPairSummary();
+    summary.min_pressure        = std::numeric_limits<double>::max();
+    pair.step_dissipation       = 0.;
+    for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
+      {
+        if (!pair.carries_contact(j))
           continue;
-        const NodalContactState &state = pair.nodal[j] = nodal_contact(
-          a, pair.multiplier[j], pair.committed_traction[j], pair.law);
+        const NodalAggregates   &a     = pair.aggregates[j];
+        const NodalContactState &state = pair.nodal[j];
         summary.max_penetration =
           std::max(summary.max_penetration, -state.gap / a.area);
         if (state.pressure > 0.)
@@ -404,6 +453,7 @@ namespace DuctileContact
   ContactProblem::linearise_operators(
     const Pair                                                  &pair,
     const std::vector<bool>                                     &needed,
+    const bool                                                   slave_rows,
     const AffineConstraints<double>                             &constraints,
     const AssemblyTargets                                       &targets,
     std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
@@ -460,7 +510,8 @@ namespace DuctileContact
                         e[1 + r] -= d * slave.nodes[node].current[r];
                         e[4 + r] += d * (slave.nodes[node].current[r] -
                                          pair.slave_committed[node][r]);
-                        matrix(3 * k + r, a) += d * force[r];
+                        if (slave_rows)
+                          matrix(3 * k + r, a) += d * force[r];
                       }
                   }
                 for (unsigned int l = 0; l < 9; ++l)
@@ -491,141 +542,170 @@ namespace DuctileContact
 
 
   void
+  ContactProblem::add_direct_gradients(
+    const Pair                                     &pair,
+    const unsigned int                              j,
+    std::map<unsigned int, std::array<double, 10>> &g)
+  {
+    const ContactSurface &slave = pair.slave;
+    const unsigned int    ns    = slave.nodes.size();
+    // D and M fixed ...
+    for (const auto &[k, d] : pair.D[j])
+      for (unsigned int r = 0; r < dim; ++r)
+        {
+          auto &e = g[3 * k + r];
+          e[1 + r] -= d;
+          e[4 + r] += d;
+        }
+    for (const auto &[l, m] : pair.M[j])
+      for (unsigned int r = 0; r < dim; ++r)
+        {
+          auto &e = g[3 * (ns + l) + r];
+          e[1 + r] += m;
+          e[4 + r] -= m;
+        }
+    // ... and the normal n_j = sum_f n_f / |sum_f n_f|:
+    // dn_j = (I - n_j n_j) / |sum_f n_f| sum_f dn_f.
+    const Tensor<1, dim> &n = pair.aggregates[j].normal;
+    const Tensor<2, dim>  P =
+      (unit_symmetric_tensor<dim>() - outer_product(n, n)) /
+      pair.normal_length[j];
+    for (const unsigned int f : slave.node_faces[j])
+      {
+        const auto &nodes = slave.faces[f].nodes;
+        const auto  i = std::find(nodes.begin(), nodes.end(), j) - nodes.begin();
+        const auto  dn =
+          pair.slave_faces[f].normal_derivatives(Quad9::node_parameter(i));
+        for (unsigned int r = 0; r < 9; ++r)
+          {
+            const Tensor<2, dim> dn_j = P * dn[r];
+            for (unsigned int m = 0; m < dim; ++m)
+              {
+                auto &e = g[3 * nodes[r] + m];
+                for (unsigned int c = 0; c < dim; ++c)
+                  e[7 + c] += dn_j[c][m];
+              }
+          }
+      }
+  }
+
+
+
+  void
+  ContactProblem::assemble_penalty(Pair                            &pair,
+                                   const AffineConstraints<double> &constraints,
+                                   const AssemblyTargets           &targets)
+  {
+    FullMatrix<double>                   matrix;
+    Vector<double>                       rhs, f_int;
+    std::vector<types::global_dof_index> indices;
+    const ContactSurface                &slave = pair.slave;
+    const unsigned int                   ns    = slave.nodes.size();
+    std::vector<bool>                    needed(ns);
+    for (unsigned int j = 0; j < ns; ++j)
+      needed[j] = pair.nodal[j].active &&
+                  discretisation.locally_owned_dofs.is_element(
+                    slave.nodes[j].dofs[0]);
+    // d(aggregates)/dx: through D and M, then directly.
+    std::vector<std::map<unsigned int, std::array<double, 10>>> gradients(ns);
+    const bool tangent = targets.tangent != nullptr;
+    if (tangent)
+      linearise_operators(pair, needed, true, constraints, targets, gradients);
+
+    for (unsigned int j = 0; j < ns; ++j)
+      {
+        if (!needed[j])
+          continue;
+        const NodalContactState &state = pair.nodal[j];
+        auto                    &g     = gradients[j];
+        if (tangent)
+          add_direct_gradients(pair, j, g);
+
+        // Local system: rows D_jk f_j (slave k), -M_jl f_j (master l);
+        // columns df_j/dx = (df_j/da) (da/dx).
+        std::map<unsigned int, unsigned int> local;
+        for (const auto &[k, d] : pair.D[j])
+          for (unsigned int r = 0; r < dim; ++r)
+            local.emplace(3 * k + r, 0);
+        for (const auto &[l, m] : pair.M[j])
+          for (unsigned int r = 0; r < dim; ++r)
+            local.emplace(3 * (ns + l) + r, 0);
+        for (const auto &entry : g)
+          local.emplace(entry.first, 0);
+        indices.clear();
+        for (auto &[key, position] : local)
+          {
+            position = indices.size();
+            indices.push_back(coordinate_dof(pair, key));
+          }
+        const unsigned int size = indices.size();
+        matrix.reinit(size, size);
+        rhs.reinit(size);
+        f_int.reinit(size);
+        // df_j/dx per column
+        std::vector<std::pair<unsigned int, Tensor<1, dim>>> df;
+        for (const auto &[key, e] : g)
+          {
+            Tensor<1, dim> v;
+            for (unsigned int r = 0; r < dim; ++r)
+              for (unsigned int a = 0; a < 10; ++a)
+                v[r] += state.jacobian[r][a] * e[a];
+            df.emplace_back(local[key], v);
+          }
+        const auto add_row = [&](const unsigned int key, const double weight) {
+          for (unsigned int r = 0; r < dim; ++r)
+            {
+              const unsigned int row = local[key + r];
+              f_int[row] += weight * state.force_density[r];
+              for (const auto &[column, v] : df)
+                matrix(row, column) += weight * v[r];
+            }
+        };
+        for (const auto &[k, d] : pair.D[j])
+          add_row(3 * k, d);
+        for (const auto &[l, m] : pair.M[j])
+          add_row(3 * (ns + l), -m);
+        for (unsigned int r = 0; r < size; ++r)
+          rhs[r] = -f_int[r];
+        scatter(matrix,
+                rhs,
+                f_int,
+                indices,
+                constraints,
+                discretisation.hanging_node_constraints,
+                targets);
+      }
+  }
+
+
+
+  void
   ContactProblem::assemble(const TrilinosWrappers::MPI::BlockVector &u,
                            const AffineConstraints<double> &constraints,
                            const AssemblyTargets           &targets)
   {
     AffineConstraints<double> all_constraints;
     extend_constraints(constraints, all_constraints);
-    FullMatrix<double>                   matrix;
-    Vector<double>                       rhs, f_int;
-    std::vector<types::global_dof_index> indices;
+    bool semi_smooth = false;
     for (Pair &pair : data)
       {
         pair.slave.update(u, discretisation);
         pair.master.update(u, discretisation);
         integrate(pair);
-
-        const ContactSurface &slave = pair.slave;
-        const unsigned int    ns    = slave.nodes.size();
-        std::vector<bool>     needed(ns);
-        for (unsigned int j = 0; j < ns; ++j)
-          needed[j] = pair.nodal[j].active &&
-                      discretisation.locally_owned_dofs.is_element(
-                        slave.nodes[j].dofs[0]);
-        // d(aggregates)/dx: through D and M ...
-        std::vector<std::map<unsigned int, std::array<double, 10>>> gradients(
-          ns);
-        const bool tangent = targets.tangent != nullptr;
-        if (tangent)
-          linearise_operators(
-            pair, needed, all_constraints, targets, gradients);
-
-        for (unsigned int j = 0; j < ns; ++j)
+        semi_smooth = semi_smooth || pair.semi_smooth;
+        if (!pair.semi_smooth)
           {
-            if (!needed[j])
-              continue;
-            const NodalContactState &state = pair.nodal[j];
-            auto                    &g     = gradients[j];
-            if (tangent)
-              {
-                // ... directly (D and M fixed) ...
-                for (const auto &[k, d] : pair.D[j])
-                  for (unsigned int r = 0; r < dim; ++r)
-                    {
-                      auto &e = g[3 * k + r];
-                      e[1 + r] -= d;
-                      e[4 + r] += d;
-                    }
-                for (const auto &[l, m] : pair.M[j])
-                  for (unsigned int r = 0; r < dim; ++r)
-                    {
-                      auto &e = g[3 * (ns + l) + r];
-                      e[1 + r] += m;
-                      e[4 + r] -= m;
-                    }
-                // ... and through the normal n_j = sum_f n_f / |sum_f n_f|:
-                // dn_j = (I - n_j n_j) / |sum_f n_f| sum_f dn_f.
-                const Tensor<1, dim> &n = pair.aggregates[j].normal;
-                const Tensor<2, dim>  P =
-                  (unit_symmetric_tensor<dim>() - outer_product(n, n)) /
-                  pair.normal_length[j];
-                for (const unsigned int f : slave.node_faces[j])
-                  {
-                    const auto &nodes = slave.faces[f].nodes;
-                    const auto  i =
-                      std::find(nodes.begin(), nodes.end(), j) - nodes.begin();
-                    const auto dn = pair.slave_faces[f].normal_derivatives(
-                      Quad9::node_parameter(i));
-                    for (unsigned int r = 0; r < 9; ++r)
-                      {
-                        const Tensor<2, dim> dn_j = P * dn[r];
-                        for (unsigned int m = 0; m < dim; ++m)
-                          {
-                            auto &e = g[3 * nodes[r] + m];
-                            for (unsigned int c = 0; c < dim; ++c)
-                              e[7 + c] += dn_j[c][m];
-                          }
-                      }
-                  }
-              }
-
-            // Local system: rows D_jk f_j (slave k), -M_jl f_j (master l);
-            // columns df_j/dx = (df_j/da) (da/dx).
-            std::map<unsigned int, unsigned int> local;
-            for (const auto &[k, d] : pair.D[j])
-              for (unsigned int r = 0; r < dim; ++r)
-                local.emplace(3 * k + r, 0);
-            for (const auto &[l, m] : pair.M[j])
-              for (unsigned int r = 0; r < dim; ++r)
-                local.emplace(3 * (ns + l) + r, 0);
-            for (const auto &entry : g)
-              local.emplace(entry.first, 0);
-            indices.clear();
-            for (auto &[key, position] : local)
-              {
-                position = indices.size();
-                indices.push_back(coordinate_dof(pair, key));
-              }
-            const unsigned int size = indices.size();
-            matrix.reinit(size, size);
-            rhs.reinit(size);
-            f_int.reinit(size);
-            // df_j/dx per column
-            std::vector<std::pair<unsigned int, Tensor<1, dim>>> df;
-            for (const auto &[key, e] : g)
-              {
-                Tensor<1, dim> v;
-                for (unsigned int r = 0; r < dim; ++r)
-                  for (unsigned int a = 0; a < 10; ++a)
-                    v[r] += state.jacobian[r][a] * e[a];
-                df.emplace_back(local[key], v);
-              }
-            const auto add_row = [&](const unsigned int key,
-                                     const double       weight) {
-              for (unsigned int r = 0; r < dim; ++r)
-                {
-                  const unsigned int row = local[key + r];
-                  f_int[row] += weight * state.force_density[r];
-                  for (const auto &[column, v] : df)
-                    matrix(row, column) += weight * v[r];
-                }
-            };
-            for (const auto &[k, d] : pair.D[j])
-              add_row(3 * k, d);
-            for (const auto &[l, m] : pair.M[j])
-              add_row(3 * (ns + l), -m);
-            for (unsigned int r = 0; r < size; ++r)
-              rhs[r] = -f_int[r];
-            scatter(matrix,
-                    rhs,
-                    f_int,
-                    indices,
-                    all_constraints,
-                    discretisation.hanging_node_constraints,
-                    targets);
+            apply_law(pair);
+            assemble_penalty(pair, all_constraints, targets);
           }
       }
+    compress(targets);
+    if (!semi_smooth)
+      return;
+    // The condensation reads the complete bulk rows of the slave nodes.
+    for (Pair &pair : data)
+      if (pair.semi_smooth)
+        condense(pair, all_constraints, targets);
     compress(targets);
   }
 
@@ -636,7 +716,8 @@ namespace DuctileContact
   {
     bool done = true;
     for (unsigned int p = 0; p < data.size(); ++p)
-      if (summaries[p].max_penetration > data[p].tolerance)
+      if (!data[p].semi_smooth &&
+          summaries[p].max_penetration > data[p].tolerance)
         {
           done = false;
           for (unsigned int j = 0; j < data[p].nodal.size(); ++j)

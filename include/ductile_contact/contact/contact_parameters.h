@@ -25,19 +25,43 @@ namespace DuctileContact
     return t;
   }
 
+  /// Contact pair/Enforcement of the non-penetration and friction
+  /// conditions.
+  enum class ContactEnforcement
+  {
+    augmented_lagrangian,
+    semi_smooth_newton
+  };
+
+  inline const NameTable<ContactEnforcement> &
+  contact_enforcement_names()
+  {
+    static const NameTable<ContactEnforcement> t{
+      {ContactEnforcement::augmented_lagrangian, "augmented Lagrangian"},
+      {ContactEnforcement::semi_smooth_newton, "semi-smooth Newton"}};
+    return t;
+  }
+
   /**
    * One contact pair, subsection `Contact pair <n>` (model.md section 5,
    * contact.md). The slave side carries the nodal contact pressures and the
    * integration; make it the finer of the two meshes. Both surfaces must be
    * boundaries of FE_Q(2) bodies (quad9 faces).
    *
-   * Normal contact is enforced by the augmented Lagrangian method on the
-   * nodal weighted gaps: lambda_j = max(0, lambdahat_j - eps_N g_j / A_j),
-   * Newton for fixed multipliers lambdahat, then lambdahat <- lambda (Uzawa)
-   * until the largest penetration is below the tolerance. Coulomb friction
-   * (48): trial traction t_n (rotated into the current tangent plane) +
-   * eps_T s_j with the nodal slip increment s_j, return map to mu_c
-   * lambda_j.
+   * Enforcement (ContactEnforcement):
+   * - augmented Lagrangian on the nodal weighted gaps: lambda_j = max(0,
+   *   lambdahat_j - eps_N g_j / A_j), Newton for fixed multipliers
+   *   lambdahat, then lambdahat <- lambda (Uzawa) until the largest
+   *   penetration is below the tolerance. Coulomb friction (48): trial
+   *   traction t_n (rotated into the current tangent plane) + eps_T s_j
+   *   with the nodal slip increment s_j, return map to mu_c lambda_j.
+   * - semi-smooth Newton: the dual multipliers are condensed from the
+   *   slave rows and the active set and stick/slip are found in the one
+   *   Newton loop through nodal complementarity functions
+   *   (nodal_complementarity.h); eps_N and eps_T are then only the
+   *   complementarity parameters c_N and c_T (they do not change the
+   *   answer): the weighted gap is zero on the active set and sticking
+   *   nodes do not slip.
    */
   struct ContactPairParameters
   {
@@ -61,6 +85,7 @@ namespace DuctileContact
     MultiplierBasis multiplier_basis = MultiplierBasis::dual;
     /// Uzawa updates per load step before the step counts as failed.
     unsigned int max_augmentations = 30;
+    ContactEnforcement enforcement = ContactEnforcement::augmented_lagrangian;
 
     void
     declare(dealii::ParameterHandler &prm);

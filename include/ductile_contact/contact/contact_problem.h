@@ -9,6 +9,7 @@
 #include <ductile_contact/assembly/assembly_data.h>
 #include <ductile_contact/contact/contact_parameters.h>
 #include <ductile_contact/contact/contact_surface.h>
+#include <ductile_contact/contact/nodal_complementarity.h>
 #include <ductile_contact/contact/nodal_contact.h>
 #include <ductile_contact/materials/body_parameters.h>
 #include <ductile_contact/output/statistics.h>
@@ -61,8 +62,23 @@ namespace DuctileContact
    * over the overlap of each slave face with its candidate master faces,
    * n_j the averaged nodal normal (g_j >= 0 open).
    *
-   * Enforcement (KKT (44)) and friction (48) per slave node
-   * (nodal_contact()): augmented Lagrangian, lambda_j = max(0, lambdahat_j
+   * Enforcement (KKT (44)) and friction (48) per slave node, chosen per
+   * pair (ContactEnforcement).
+   *
+   * Semi-smooth Newton (condense()): with the dual basis the slave row of
+   * node j reads R_j + A_j f_j = 0 (D lumped to its row sum A_j, which is
+   * D_jj wherever the slave faces around j are covered by master faces),
+   * so the multiplier is condensed as f_j(u) = -R_j(u) / A_j from the bulk
+   * residual; the slave rows become the complementarity function -C_j(a_j,
+   * f_j) (nodal_complementarity.h) and the master rows R_l - sum_j M_jl
+   * f_j. The linearised system is the bulk one with the slave rows
+   * combined into C_f / A_j K_j and added, as M_jl / A_j K_j, to the
+   * master rows (Popp, Gee & Wall 2009), plus the terms of dD, dM, dn.
+   * The active set and stick/slip follow from the iterate, with no state
+   * and no Uzawa loop; a DoF of a slave node fixed by a Dirichlet
+   * condition carries no traction (f_j,c = 0).
+   *
+   * Augmented Lagrangian (nodal_contact()): lambda_j = max(0, lambdahat_j
    * - eps_N g_j / A_j), Coulomb friction with a tangential penalty and the
    * return map on the slip since the last accepted step; the node
    * transmits the traction f_j = lambda_j n_j + t_j, i.e. the contact force
@@ -163,6 +179,7 @@ namespace DuctileContact
       unsigned int           index = 0; ///< position in pairs and summaries
       ContactSurface         slave, master;
       bool                   dual = true; ///< dual or standard multiplier basis
+      bool semi_smooth = false; ///< ContactEnforcement::semi_smooth_newton
       NodalContactParameters law;
       double                 search_radius = 0., tolerance = 0.; ///< [m]
       double                 face_size = 0.; ///< smallest slave face size [m]
@@ -186,6 +203,11 @@ namespace DuctileContact
       std::vector<NodalAggregates>                aggregates;
       std::vector<double>                         normal_length;
       std::vector<NodalContactState>              nodal;
+
+      /// Whether slave node @p j has a share of the overlap (only those
+      /// carry contact).
+      bool
+      carries_contact(const unsigned int j) const;
     };
 
     /// @p constraints (which know the locally relevant DoFs only) plus the
@@ -198,23 +220,76 @@ namespace DuctileContact
     extend_constraints(const dealii::AffineConstraints<double> &constraints,
                        dealii::AffineConstraints<double>       &extended) const;
 
-    /// D, M, normals, aggregates and nodal states of @p pair on its
-    /// current geometry.
+    /// D, M, normals and aggregates of @p pair on its current geometry.
     void
     integrate(Pair &pair);
 
+    /// The nodal contact law (augmented Lagrangian) of every node of
+    /// @p pair and its summary.
+    void
+    apply_law(Pair &pair);
+
+    /// summaries[pair.index] from pair.nodal and the aggregates.
+    void
+    summarise(Pair &pair);
+
+    /// Contact terms of an augmented-Lagrangian pair into @p targets
+    /// (not compressed).
+    void
+    assemble_penalty(Pair                                    &pair,
+                     const dealii::AffineConstraints<double> &constraints,
+                     const AssemblyTargets                   &targets);
+
+    /// Semi-smooth Newton pair: condenses the multipliers from the
+    /// compressed bulk system in @p targets (class documentation) and adds
+    /// the rows (not compressed).
+    void
+    condense(Pair                                    &pair,
+             const dealii::AffineConstraints<double> &constraints,
+             const AssemblyTargets                   &targets);
+
+    /// Adds @p weight times the rows @p rows of the tangent (read before
+    /// any change) to the row of @p dof, through @p constraints (a
+    /// Dirichlet row takes nothing, a hanging row goes to its parents).
+    struct MatrixRow
+    {
+      /// Per block column b: block-local columns and values.
+      std::vector<std::vector<dealii::types::global_dof_index>> columns;
+      std::vector<std::vector<double>>       values;
+    };
+    static void
+    add_row(const MatrixRow                         &row,
+            const double                             weight,
+            const dealii::types::global_dof_index    dof,
+            const dealii::AffineConstraints<double> &constraints,
+            dealii::TrilinosWrappers::BlockSparseMatrix &tangent);
+
     /// d(aggregates of node j)/dx from the derivatives of D and M
     /// (overlapping face pairs with a node in @p needed) and adds the
-    /// dD f_j, dM f_j part of the tangent to @p targets. Keys of @p
-    /// gradients: 3 node + c, master nodes after the slave nodes.
+    /// dD f_j (if @p slave_rows), dM f_j part of the tangent to @p
+    /// targets. Keys of @p gradients: 3 node + c, master nodes after the
+    /// slave nodes.
     void
     linearise_operators(
       const Pair                                                  &pair,
       const std::vector<bool>                                     &needed,
+      const bool                                                   slave_rows,
       const dealii::AffineConstraints<double>                     &constraints,
       const AssemblyTargets                                       &targets,
       std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
       const;
+
+    /// Adds to @p g the derivatives of the aggregates of node @p j with
+    /// D and M held (G, H through the positions) and of its normal.
+    static void
+    add_direct_gradients(const Pair                                 &pair,
+                         const unsigned int                          j,
+                         std::map<unsigned int, std::array<double, 10>> &g);
+
+    /// Columns of the bulk rows of the owned slave nodes of @p pair (DoFs
+    /// of the cells around them), per slave node.
+    std::vector<std::vector<dealii::types::global_dof_index>>
+    slave_row_columns(const Pair &pair) const;
 
     /// The DoF of coordinate @p key = 3 node + c (master nodes numbered
     /// after the slave nodes), the keys of linearise_operators().

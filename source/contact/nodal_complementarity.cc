@@ -1,0 +1,94 @@
+#include <ductile_contact/contact/nodal_complementarity.h>
+
+#include <Sacado.hpp>
+#include <cmath>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  NodalComplementarity
+  nodal_complementarity(const NodalAggregates        &a,
+                        const Tensor<1, dim>         &traction,
+                        const NodalContactParameters &p)
+  {
+    constexpr unsigned int n_args = complementarity_arguments;
+    using AD                      = Sacado::Fad::SFad<double, n_args>;
+    using V                       = std::array<AD, dim>;
+    const auto dot = [](const V &x, const V &y) -> AD {
+      return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+    };
+
+    const AD A(n_args, 0, a.area);
+    V        G, H, n, f;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        G[c] = AD(n_args, 1 + c, a.G[c]);
+        H[c] = AD(n_args, 4 + c, a.H[c]);
+        n[c] = AD(n_args, 7 + c, a.normal[c]);
+        f[c] = AD(n_args, 10 + c, traction[c]);
+      }
+
+    using std::sqrt;
+    NodalComplementarity result;
+    const AD             gap        = dot(n, G);
+    const AD             lambda     = dot(n, f);
+    const AD             lambda_aug = lambda - p.penalty * gap / A;
+    const AD             Hn         = dot(n, H);
+    V                    t, s;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        t[c] = f[c] - lambda * n[c];
+        s[c] = (H[c] - Hn * n[c]) / A;
+      }
+    result.gap    = gap.val();
+    result.active = lambda_aug.val() > -p.activation_threshold;
+    for (unsigned int c = 0; c < dim; ++c)
+      result.slip[c] = s[c].val();
+
+    V C;
+    if (!result.active)
+      for (unsigned int c = 0; c < dim; ++c)
+        C[c] = A * f[c];
+    else
+      {
+        result.pressure = std::max(0., lambda.val());
+        V          C_T  = t;
+        const AD   bound = p.friction * lambda_aug;
+        if (p.friction > 0. && bound.val() > 0.)
+          {
+            V tau;
+            for (unsigned int c = 0; c < dim; ++c)
+              tau[c] = t[c] + p.tangential_penalty * s[c];
+            const AD tau_norm = sqrt(dot(tau, tau));
+            if (tau_norm.val() <= bound.val())
+              {
+                result.friction_state = 1;
+                for (unsigned int c = 0; c < dim; ++c)
+                  C_T[c] = -p.tangential_penalty * s[c];
+              }
+            else
+              {
+                result.friction_state = 2;
+                for (unsigned int c = 0; c < dim; ++c)
+                  C_T[c] = t[c] - bound * tau[c] / tau_norm;
+              }
+          }
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            C[c] = p.penalty * gap * n[c] + A * C_T[c];
+            result.traction[c] = t[c].val();
+            result.dissipation += a.area * t[c].val() * s[c].val();
+          }
+        if (p.friction == 0.)
+          result.dissipation = 0.;
+      }
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        result.value[c] = C[c].val();
+        for (unsigned int d = 0; d < n_args; ++d)
+          result.jacobian[c][d] = C[c].fastAccessDx(d);
+      }
+    return result;
+  }
+} // namespace DuctileContact

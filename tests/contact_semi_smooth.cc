@@ -1,0 +1,183 @@
+// Issue #24: contact by the semi-smooth Newton method (Contact pair/
+// Enforcement = semi-smooth Newton: dual multipliers condensed from the
+// slave rows, active set and stick/slip resolved in the one Newton loop).
+//  - The patch test of contact_patch (non-matching swirled cubes, symmetry
+//    planes through the contact surface, 1 MPa on top), both sides as
+//    slave: the pressure p / lambda_lat^2 at every slave node and the
+//    single block's displacement, as with the augmented Lagrangian, but
+//    with the weighted gap zero on the active set (no penetration
+//    tolerance) and no multiplier loop; the consistent tangent (finite
+//    differences of the whole condensed residual) and quadratic
+//    convergence.
+//  - Coulomb sliding of contact_friction (mu_c = 0.3): the interface
+//    sticks exactly at first, then every node slips with |F_T| = mu_c
+//    |F_N|, and the top's reaction balances F_N + F_T.
+// On 1 and 2 MPI ranks with identical output.
+#include "tests.h"
+
+#include <cmath>
+
+using namespace dealii;
+
+namespace
+{
+  const std::string semi_smooth = "  set Enforcement = semi-smooth Newton\n";
+
+  std::string
+  patch_prm(const unsigned int slave, const unsigned int master)
+  {
+    return Testing::two_body_contact_prm(
+             "contact_patch.msh", "1e9", "2e9", slave, master, semi_smooth) +
+           R"(
+subsection Boundary conditions
+  set Boundary ids = 1, 2, 5, 6, 8, 9
+end
+subsection Boundary 1
+  set Constrained components = z
+end
+subsection Boundary 2
+  set Traction = 0; 0; -1e6*t
+end
+subsection Boundary 5
+  set Constrained components = x
+end
+subsection Boundary 6
+  set Constrained components = y
+end
+subsection Boundary 8
+  set Constrained components = x
+end
+subsection Boundary 9
+  set Constrained components = y
+end
+subsection Load stepping
+  set End time  = 1
+  set Time step = 0.5
+end
+subsection Newton
+  set Relative tolerance = 1e-11
+  set Check tangent      = true
+end
+)";
+  }
+
+  std::string
+  sliding_prm()
+  {
+    return Testing::two_body_contact_prm("contact_patch.msh",
+                                         "1e9",
+                                         "2e9",
+                                         4,
+                                         3,
+                                         semi_smooth +
+                                           "  set Friction coefficient = 0.3\n") +
+           R"(
+subsection Boundary conditions
+  set Boundary ids = 1, 2
+end
+subsection Boundary 1
+  set Constrained components = x, y, z
+end
+subsection Boundary 2
+  set Constrained components = x, y
+  set Displacement           = 1e-2*max(t-1,0); 0; 0
+  set Traction               = 0; 0; -1e6*min(t,1)
+end
+subsection Load stepping
+  set End time  = 2
+  set Time step = 0.125
+end
+subsection Linear solver
+  set Type = direct
+end
+)";
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::ofstream                    out = Testing::open_output();
+
+  const auto   block   = Testing::run_scene(
+    Testing::contact_patch_single_block_prm(), "single_block");
+  const double lateral    = 1. + 2. * block.at("u5_x").back();
+  const double p_expected = 1e6 / (lateral * lateral);
+  for (const auto &[slave, master, name] :
+       {std::tuple{4u, 3u, "finer (upper) cube as slave"},
+        std::tuple{3u, 4u, "coarser (lower) cube as slave"}})
+    {
+      const auto   s = Testing::run_scene(patch_prm(slave, master),
+                                        "patch_" + std::to_string(slave));
+      const std::size_t last  = s.at("time").size() - 1;
+      const double      p_max = s.at("contact1_max_pressure")[last];
+      const double      p_min = s.at("contact1_min_pressure")[last];
+      const double      force = s.at("contact1_force_z")[last];
+      const double      pen   = s.at("contact1_max_penetration")[last];
+      const double      sign  = (slave == 4) ? -1. : 1.;
+      double            tangent_error = 0., newton = 0.;
+      for (std::size_t n = 1; n <= last; ++n)
+        {
+          tangent_error = std::max(tangent_error, s.at("tangent_error")[n]);
+          newton        = std::max(newton, s.at("newton_iterations")[n]);
+        }
+      out << name << ":" << std::endl
+          << "  pressure uniform, (max - min) / max < 1e-8: "
+          << Testing::yes_no((p_max - p_min) / p_max < 1e-8) << std::endl
+          << "  pressure = p / lambda_lat^2 of the single block (1e-6): "
+          << Testing::yes_no(std::abs(p_max - p_expected) < 1e-6 * p_expected)
+          << std::endl
+          << "  contact force = p A_0 (1e-8): "
+          << Testing::yes_no(std::abs(sign * force - 1e6) < 1e-2) << std::endl
+          << "  weighted gap zero on the active set (penetration < 1e-12 h): "
+          << Testing::yes_no(pen < 1e-12 * 0.25) << std::endl
+          << "  consistent tangent (finite-difference error < 1e-5): "
+          << Testing::yes_no(tangent_error < 1e-5) << std::endl
+          << "  at most 4 Newton iterations per step, no multiplier "
+             "updates: "
+          << Testing::yes_no(newton <= 4 &&
+                             s.at("contact_augmentations")[last] <= 1)
+          << std::endl
+          << "  active slave nodes: " << s.at("contact1_active_nodes")[last]
+          << std::endl;
+      std::cout << name << ": p " << p_min << " .. " << p_max << " (exact "
+                << p_expected << "), force " << force << ", penetration "
+                << pen << ", tangent error " << tangent_error
+                << ", Newton per step " << newton << std::endl;
+    }
+
+  {
+    const auto        s     = Testing::run_scene(sliding_prm(), "mu03");
+    const std::size_t last  = s.at("time").size() - 1;
+    const double      ratio = Testing::contact_norm(s, "friction", last) /
+                         Testing::contact_norm(s, "force", last);
+    const double balance =
+      std::abs(s.at("F2_x")[last] - s.at("contact1_force_x")[last] -
+               s.at("contact1_friction_x")[last]) /
+      std::abs(s.at("F2_x")[last]);
+    double newton = 0.;
+    for (std::size_t n = 1; n <= last; ++n)
+      newton += s.at("newton_iterations")[n];
+    std::cout << "mu 0.3: |F_T|/|F_N| " << ratio << ", balance " << balance
+              << ", slipping " << s.at("contact1_slipping_nodes")[last]
+              << " of " << s.at("contact1_active_nodes")[last]
+              << ", Newton iterations " << newton << " in " << last
+              << " steps" << std::endl;
+    out << "mu_c = 0.3, full sliding: every node in contact slips: "
+        << Testing::yes_no(s.at("contact1_slipping_nodes")[last] ==
+                             s.at("contact1_active_nodes")[last] &&
+                           s.at("contact1_active_nodes")[last] > 0)
+        << std::endl
+        << "  |F_T| = mu_c |F_N| (1e-6): "
+        << Testing::yes_no(std::abs(ratio - 0.3) < 0.3e-6) << std::endl
+        << "  reaction of the top = F_N,x + F_T,x (1e-6): "
+        << Testing::yes_no(balance < 1e-6) << std::endl
+        << "  the interface stuck at first (no slip before the shear, no "
+           "slip distance): "
+        << Testing::yes_no(s.at("contact1_slipping_nodes")[8] == 0 &&
+                           s.at("contact1_sticking_nodes")[8] > 0 &&
+                           s.at("contact1_max_slip")[8] < 1e-12)
+        << std::endl;
+  }
+}
