@@ -4,6 +4,8 @@
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <Epetra_CrsMatrix.h>
+
 #include <ductile_contact/assembly/scatter.h>
 #include <ductile_contact/contact/contact_problem.h>
 
@@ -233,11 +235,20 @@ namespace DuctileContact
                 const auto &block = targets.tangent->block(0, b);
                 if (block.n() == 0)
                   continue;
-                for (auto e = block.begin(dofs[c]); e != block.end(dofs[c]); ++e)
-                  if (e->value() != 0.)
+                // The row as Epetra stores it (deal.II's row iterator looks
+                // up every entry again).
+                const Epetra_CrsMatrix &epetra = block.trilinos_matrix();
+                const int row = epetra.LRID(static_cast<long long>(dofs[c]));
+                int       n   = 0;
+                double   *values;
+                int      *local_columns;
+                epetra.ExtractMyRowView(row, n, values, local_columns);
+                for (int e = 0; e < n; ++e)
+                  if (values[e] != 0.)
                     {
-                      rows[c].columns[b].push_back(e->column());
-                      rows[c].values[b].push_back(e->value());
+                      rows[c].columns[b].push_back(
+                        epetra.ColMap().GID64(local_columns[e]));
+                      rows[c].values[b].push_back(values[e]);
                     }
               }
           }
