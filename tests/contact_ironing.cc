@@ -14,6 +14,10 @@
 //    <= 1.1 mu_c;
 //  - the penetration stays below the tolerance and the energy balance
 //    W_ext - Psi^e - D_c closes to 1 % of the work done.
+// With the augmented Lagrangian (the test of that enforcement with
+// friction; the semi-smooth Newton default's exact stick counts the
+// dissipation of the step in which the die starts to slide to first order
+// in the step, and the balance closes to 1.6 % here, doc/contact.md 5a).
 // On 2 MPI ranks.
 #include "tests.h"
 
@@ -33,7 +37,10 @@ main(int argc, char **argv)
                                                         3,
                                                         4,
                                                         "  set Friction "
-                                                        "coefficient = 0.3\n") +
+                                                        "coefficient = 0.3\n"
+                                                        "  set Enforcement = "
+                                                        "augmented "
+                                                        "Lagrangian\n") +
                           R"(
 subsection Body 2
   set Shear modulus = 3.846153846e9

@@ -370,9 +370,13 @@ namespace DuctileContact
         NodalAggregates &a = pair.aggregates[j];
         for (const auto &[k, d] : pair.D[j])
           {
+            // Semi-smooth Newton: D lumped to node j (the force side is,
+            // contact_problem.h), so that the contact forces do no work
+            // on the weighted gap and slip.
+            const unsigned int node = pair.semi_smooth ? j : k;
             a.area += d;
-            a.G -= d * slave.nodes[k].current;
-            a.H += d * (slave.nodes[k].current - pair.slave_committed[k]);
+            a.G -= d * slave.nodes[node].current;
+            a.H += d * (slave.nodes[node].current - pair.slave_committed[node]);
           }
         for (const auto &[l, m] : pair.M[j])
           {
@@ -503,7 +507,7 @@ namespace DuctileContact
                 for (unsigned int k = 0; k < 9; ++k)
                   {
                     const double       d    = operators->dD[i][k][a];
-                    const unsigned int node = s_nodes[k];
+                    const unsigned int node = pair.semi_smooth ? j : s_nodes[k];
                     e[0] += d;
                     for (unsigned int r = 0; r < dim; ++r)
                       {
@@ -549,11 +553,11 @@ namespace DuctileContact
   {
     const ContactSurface &slave = pair.slave;
     const unsigned int    ns    = slave.nodes.size();
-    // D and M fixed ...
+    // D and M fixed (D lumped to node j for semi-smooth Newton) ...
     for (const auto &[k, d] : pair.D[j])
       for (unsigned int r = 0; r < dim; ++r)
         {
-          auto &e = g[3 * k + r];
+          auto &e = g[3 * (pair.semi_smooth ? j : k) + r];
           e[1 + r] -= d;
           e[4 + r] += d;
         }

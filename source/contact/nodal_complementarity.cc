@@ -74,14 +74,17 @@ namespace DuctileContact
                   C_T[c] = t[c] - bound * tau[c] / tau_norm;
               }
           }
+        // Without friction t is zero at a solution: no traction is
+        // reported (its round-off would show as a friction force).
         for (unsigned int c = 0; c < dim; ++c)
           {
             C[c] = p.penalty * gap * n[c] + A * C_T[c];
-            result.traction[c] = t[c].val();
-            result.dissipation += a.area * t[c].val() * s[c].val();
+            if (p.friction > 0.)
+              {
+                result.traction[c] = t[c].val();
+                result.dissipation += a.area * t[c].val() * s[c].val();
+              }
           }
-        if (p.friction == 0.)
-          result.dissipation = 0.;
       }
     for (unsigned int c = 0; c < dim; ++c)
       {

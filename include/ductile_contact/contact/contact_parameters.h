@@ -85,7 +85,7 @@ namespace DuctileContact
     MultiplierBasis multiplier_basis = MultiplierBasis::dual;
     /// Uzawa updates per load step before the step counts as failed.
     unsigned int max_augmentations = 30;
-    ContactEnforcement enforcement = ContactEnforcement::augmented_lagrangian;
+    ContactEnforcement enforcement = ContactEnforcement::semi_smooth_newton;
 
     void
     declare(dealii::ParameterHandler &prm);
