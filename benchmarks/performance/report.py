@@ -1,0 +1,121 @@
+"""Table of the performance runs (run.sh): per scene and variant the
+unknowns, load steps, Newton and linear iterations, wall time, the time per
+Newton iteration split into bulk assembly (cells and faces, line search
+included), contact (integration and tangent), linear solve and the rest,
+peak memory, and the scene's quantity of interest against its reference,
+with the tolerance within which a speed-up counts. Writes results.md."""
+import os
+import re
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, ".."))
+from runs_io import read_statistics, wall_time  # noqa: E402
+
+
+def last(column):
+    return lambda rows: rows[-1][column]
+
+
+def largest(column, scale=1.):
+    return lambda rows: scale * max(abs(r[column]) for r in rows)
+
+
+def ratio(rows):
+    return rows[-1]["F2_x"] / rows[-1]["F2_y"]
+
+
+# scene: (quantity, function of the statistics rows, reference, relative
+# tolerance, where the reference comes from). The tolerance is well below
+# the quantity's discretisation error.
+quantities = {
+    "box_compression": ("F5_z at the end [N]", last("F5_z"), None, 1e-6,
+                        "no committed whole run: the default row is the "
+                        "reference of later runs"),
+    "necking_bar": ("peak force 4 |F2_x| [N]", largest("F2_x", 4.), 77.30e3,
+                    2e-3, "benchmarks/plasticity/README.md (77.30 kN on "
+                    "every mesh)"),
+    "two_bodies": ("F2_z at 16.95 mm [N]", last("F2_z"), -21154., 1e-3,
+                   "benchmarks/contact/two_bodies/results.md (issue #24: "
+                   "within 0.1 %)"),
+    "hertz_sphere": ("F2_z at 0.1 mm [N]", last("F2_z"), -745.05, 1e-3,
+                     "benchmarks/contact/hertz_sphere/results.md, h = a/4 "
+                     "(discretisation error against Hertz 1.5-5 %)"),
+    "ironing": ("F2_x / F2_y at the end", ratio, 0.30175, 1e-3,
+                "benchmarks/contact/ironing/results.md (0.3017 .. 0.3018 "
+                "while sliding)"),
+    "ductile_notch": ("peak |F2_y| [N]", largest("F2_y"), 14.9546, 2e-3,
+                      "benchmarks/plasticity/ductile_notch/runs/"
+                      "h0.05-delta1e-3"),
+    "sent_coarse": ("F_max = max |F2_y| [N]", largest("F2_y"), 13.0138, 1e-3,
+                    "0.52055 kN/mm x 0.025 mm, benchmarks/phase_field/"
+                    "sent_scene"),
+}
+order = ["default", "al"]
+names = {"default": "current defaults",
+         "al": "augmented Lagrangian (before)"}
+
+
+def find(pattern, text, default=None):
+    m = re.search(pattern, text)
+    return m.group(1) if m else default
+
+
+def section(screen, name):
+    """Wall time [s] of timer section @p name (0 if absent)."""
+    value = find(r"\| " + re.escape(name) + r"\s*\|\s*\d+\s*\|\s*([\d.e+-]+)s",
+                 screen)
+    return float(value) if value else 0.
+
+
+def row(scene, variant, run):
+    screen_path = os.path.join(run, "screen.txt")
+    screen = open(screen_path).read()
+    unknowns = find(r"DoFs: (\d+)", screen, "-")
+    memory = find(r"peak memory (\d+) KB", screen)
+    memory = f"{int(memory) / 1024:.0f}" if memory else "-"
+    wall = wall_time(screen_path)
+    stats = os.path.join(run, "statistics")
+    if wall is None or not os.path.exists(stats):
+        return (f"| {scene} | {names[variant]} | {unknowns} | stopped | | | |"
+                " | | | | | |")
+    rows = read_statistics(stats)
+    its = sum(r["newton_iterations"] for r in rows)
+    lin = sum(r["linear_iterations"] for r in rows)
+    contact = (section(screen, "contact: integration, tangent") +
+               section(screen, "contact: integration, residual"))
+    assembly = (section(screen, "assembly") +
+                section(screen, "assembly (line search)") - contact)
+    solve = section(screen, "linear solve")
+    rest = wall - assembly - contact - solve
+    per = lambda x: 1e3 * x / its  # noqa: E731
+    name, f, reference, tolerance, _ = quantities[scene]
+    value = f(rows)
+    if reference is None:
+        agree = "reference"
+    else:
+        error = abs(value - reference) / abs(reference)
+        agree = f"{error:.1e} ({'yes' if error <= tolerance else 'NO'})"
+    return (f"| {scene} | {names[variant]} | {unknowns} | {int(rows[-1]['step'])} "
+            f"| {its:.0f} | {lin:.0f} | {wall:.0f} | {per(wall):.0f} | "
+            f"{per(assembly):.0f} / {per(contact):.0f} / {per(solve):.0f} / "
+            f"{per(rest):.0f} | {memory} | {value:.6g} | {agree} |")
+
+
+lines = ["| scene | variant | unknowns | steps | Newton its | linear its | "
+         "wall [s] | per Newton it [ms] | assembly / contact / solve / rest "
+         "[ms per it] | peak memory [MB/rank] | quantity of interest | "
+         "relative difference to the reference (within tolerance) |",
+         "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+runs = os.path.join(here, "runs")
+for scene in quantities:
+    for variant in order:
+        run = os.path.join(runs, scene, variant)
+        if os.path.exists(os.path.join(run, "screen.txt")):
+            lines.append(row(scene, variant, run))
+lines += ["", "Quantities of interest and their references:", ""]
+for scene, (name, _, reference, tolerance, source) in quantities.items():
+    lines.append(f"- {scene}: {name}, reference {reference}, tolerance "
+                 f"{tolerance:g} relative; {source}.")
+open(os.path.join(here, "results.md"), "w").write("\n".join(lines) + "\n")
+print("\n".join(lines))

@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Issue #24: every shipped scene that finishes within an hour, run whole on
+# 2 MPI ranks with the current defaults, and the contact scenes once more
+# with the augmented Lagrangian (the enforcement before the semi-smooth
+# Newton method) for a before/after on the same machine and day.
+# report.py writes results.md: wall time, Newton and linear iterations, time
+# per Newton iteration split into bulk assembly / contact / linear solve /
+# rest, peak memory, and each scene's quantity of interest against its
+# reference (a speed-up counts only where it agrees).
+# Usage: benchmarks/performance/run.sh [SCENE[:VARIANT]...]
+#   default: all scenes below with their variants. Finished runs are kept
+#   (delete runs/SCENE/VARIANT to redo one).
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/../../scripts/env.sh"
+require_build
+
+# scene -> variants; a variant is a name and .prm lines to append
+# (';' separates lines), "default" appends nothing.
+declare -A variants=(
+  [box_compression]="default"
+  [necking_bar]="default"
+  [two_bodies]="default al"
+  [hertz_sphere]="default"
+  [ironing]="default"
+  [ductile_notch]="default"
+  [sent_coarse]="default"
+)
+declare -A settings=(
+  [al]="subsection Contact pair 1;  set Enforcement = augmented Lagrangian;end"
+)
+order=(box_compression necking_bar two_bodies hertz_sphere ironing ductile_notch sent_coarse)
+
+jobs=("$@")
+if ((${#jobs[@]} == 0)); then
+  for scene in "${order[@]}"; do
+    for v in ${variants[$scene]}; do jobs+=("$scene:$v"); done
+  done
+fi
+
+for job in "${jobs[@]}"; do
+  scene=${job%%:*}
+  variant=${job#*:}
+  [[ $variant == "$job" ]] && variant=default
+  out=$here/runs/$scene/$variant
+  if run_finished "$out"; then
+    echo "== $scene $variant: done before"
+    continue
+  fi
+  rm -rf "$out"
+  mkdir -p "$out"
+  cp "$project_root/prm/$scene.prm" "$out/scene.prm"
+  printf 'subsection Output\n  set Directory = %s\n  set Interval = 0\nend\n' \
+    "$out" >> "$out/scene.prm"
+  if [[ $variant != default ]]; then
+    tr ';' '\n' <<< "${settings[$variant]}" >> "$out/scene.prm"
+    echo >> "$out/scene.prm"
+  fi
+  echo "== $scene $variant ($(date +%H:%M))"
+  (cd "$project_root" && /usr/bin/time -f "peak memory %M KB per rank" \
+     mpirun -np 2 "$exe" "$out/scene.prm") > "$out/screen.txt" 2>&1 ||
+    echo "   stopped early, see $out/screen.txt"
+done
+python3 "$here/report.py"
