@@ -17,7 +17,7 @@
 // With the augmented Lagrangian (the test of that enforcement with
 // friction; the semi-smooth Newton default's exact stick counts the
 // dissipation of the step in which the die starts to slide to first order
-// in the step, and the balance closes to 1.6 % here, doc/contact.md 5a).
+// in the step, and the balance closes to 2.7 % here, doc/contact.md 5a).
 // On 2 MPI ranks.
 #include "tests.h"
 

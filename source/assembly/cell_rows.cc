@@ -99,7 +99,20 @@ namespace DuctileContact
                 shapes.grad_times_A[k][c][D] = sum * JxW;
               }
       }
-    if (tangent)
+    if (tangent && m.symmetric_tangent)
+      for (unsigned int k = 0; k < n_u; ++k)
+        {
+          rows.matrix(dofs.u[k], dofs.u[k]) +=
+            shapes.grad_times_A[k][dofs.u_component[k]] * shapes.u_grad[k];
+          for (unsigned int l = k + 1; l < n_u; ++l)
+            {
+              const double v =
+                shapes.grad_times_A[k][dofs.u_component[l]] * shapes.u_grad[l];
+              rows.matrix(dofs.u[k], dofs.u[l]) += v;
+              rows.matrix(dofs.u[l], dofs.u[k]) += v;
+            }
+        }
+    else if (tangent)
       for (unsigned int k = 0; k < n_u; ++k)
         for (unsigned int l = 0; l < n_u; ++l)
           rows.matrix(dofs.u[k], dofs.u[l]) +=

@@ -140,17 +140,7 @@ namespace DuctileContact
         state.traction           = law[j].traction;
         state.slip               = law[j].slip;
         state.friction_state     = law[j].friction_state;
-        // Dissipation of the step by the trapezoidal rule, A (t_n + t) / 2
-        // . s (t_n projected onto the current tangent plane): t s alone
-        // counts a node that starts to slip within the step as if it had
-        // slipped at the limit traction all along.
-        const Tensor<1, dim> &n   = pair.aggregates[j].normal;
-        const Tensor<1, dim>  t_n = pair.committed_traction[j] -
-                                   (pair.committed_traction[j] * n) * n;
-        state.dissipation = law[j].friction_state == 0 ?
-                              0. :
-                              0.5 * pair.aggregates[j].area *
-                                ((law[j].traction + t_n) * law[j].slip);
+        state.dissipation        = law[j].dissipation;
         state.force_density      = fj;
       }
     summarise(pair);

@@ -29,7 +29,9 @@ namespace DuctileContact
     /// s_j = (I - n n) H_j / A_j [m], 0 (none), 1 (stick) or 2 (slip).
     dealii::Tensor<1, dim> traction, slip;
     unsigned char          friction_state = 0;
-    /// A_j t_j . s_j [J] (ContactProblem uses the trapezoidal rule).
+    /// A_j t_j . s_j, the node's frictional dissipation in the step, with
+    /// the traction at the end of the step (backward Euler, as the update)
+    /// [J].
     double dissipation = 0.;
   };
 
