@@ -60,10 +60,11 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out = Testing::open_output();
 
-  const auto   block   = Testing::run_scene(Testing::contact_patch_single_block_prm(),
-                                             "single_block");
-  const double top_uz  = block.at("u5_z").back();
-  const double lateral = 1. + 2. * block.at("u5_x").back();
+  const auto block =
+    Testing::run_scene(Testing::contact_patch_single_block_prm(),
+                       "single_block");
+  const double top_uz     = block.at("u5_z").back();
+  const double lateral    = 1. + 2. * block.at("u5_x").back();
   const double p_expected = 1e6 / (lateral * lateral);
   std::cout << "single block: top u_z " << top_uz << ", lateral stretch "
             << lateral << ", Cauchy pressure " << p_expected << std::endl;

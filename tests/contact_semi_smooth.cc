@@ -86,13 +86,13 @@ end
   std::string
   sliding_prm()
   {
-    return Testing::two_body_contact_prm("contact_patch.msh",
-                                         "1e9",
-                                         "2e9",
-                                         4,
-                                         3,
-                                         semi_smooth +
-                                           "  set Friction coefficient = 0.3\n") +
+    return Testing::two_body_contact_prm(
+             "contact_patch.msh",
+             "1e9",
+             "2e9",
+             4,
+             3,
+             semi_smooth + "  set Friction coefficient = 0.3\n") +
            R"(
 subsection Boundary conditions
   set Boundary ids = 1, 2
@@ -122,22 +122,23 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out = Testing::open_output();
 
-  const auto   block   = Testing::run_scene(
-    Testing::contact_patch_single_block_prm(), "single_block");
+  const auto block =
+    Testing::run_scene(Testing::contact_patch_single_block_prm(),
+                       "single_block");
   const double lateral    = 1. + 2. * block.at("u5_x").back();
   const double p_expected = 1e6 / (lateral * lateral);
   for (const auto &[slave, master, name] :
        {std::tuple{4u, 3u, "finer (upper) cube as slave"},
         std::tuple{3u, 4u, "coarser (lower) cube as slave"}})
     {
-      const auto   s = Testing::run_scene(patch_prm(slave, master),
+      const auto        s      = Testing::run_scene(patch_prm(slave, master),
                                         "patch_" + std::to_string(slave));
-      const std::size_t last  = s.at("time").size() - 1;
-      const double      p_max = s.at("contact1_max_pressure")[last];
-      const double      p_min = s.at("contact1_min_pressure")[last];
-      const double      force = s.at("contact1_force_z")[last];
-      const double      pen   = s.at("contact1_max_penetration")[last];
-      const double      sign  = (slave == 4) ? -1. : 1.;
+      const std::size_t last   = s.at("time").size() - 1;
+      const double      p_max  = s.at("contact1_max_pressure")[last];
+      const double      p_min  = s.at("contact1_min_pressure")[last];
+      const double      force  = s.at("contact1_force_z")[last];
+      const double      pen    = s.at("contact1_max_penetration")[last];
+      const double      sign   = (slave == 4) ? -1. : 1.;
       double            newton = 0.;
       for (std::size_t n = 1; n <= last; ++n)
         newton = std::max(newton, s.at("newton_iterations")[n]);
@@ -159,8 +160,8 @@ main(int argc, char **argv)
           << "  active slave nodes: " << s.at("contact1_active_nodes")[last]
           << std::endl;
       std::cout << name << ": p " << p_min << " .. " << p_max << " (exact "
-                << p_expected << "), force " << force << ", penetration "
-                << pen << ", Newton per step " << newton << std::endl;
+                << p_expected << "), force " << force << ", penetration " << pen
+                << ", Newton per step " << newton << std::endl;
     }
 
   {
@@ -203,8 +204,8 @@ main(int argc, char **argv)
     std::cout << "mu 0.3: |F_T|/|F_N| " << ratio << ", balance " << balance
               << ", slipping " << s.at("contact1_slipping_nodes")[last]
               << " of " << s.at("contact1_active_nodes")[last]
-              << ", Newton iterations " << newton << " in " << last
-              << " steps" << std::endl;
+              << ", Newton iterations " << newton << " in " << last << " steps"
+              << std::endl;
     out << "mu_c = 0.3, full sliding: every node in contact slips: "
         << Testing::yes_no(s.at("contact1_slipping_nodes")[last] ==
                              s.at("contact1_active_nodes")[last] &&

@@ -4,11 +4,10 @@
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <Epetra_CrsMatrix.h>
-
 #include <ductile_contact/assembly/scatter.h>
 #include <ductile_contact/contact/contact_problem.h>
 
+#include <Epetra_CrsMatrix.h>
 #include <algorithm>
 #include <unordered_map>
 
@@ -17,14 +16,13 @@ namespace DuctileContact
   using namespace dealii;
 
   void
-  ContactProblem::add_row(const MatrixRow                 &row,
-                          const double                     weight,
-                          const types::global_dof_index    dof,
-                          const AffineConstraints<double> &constraints,
+  ContactProblem::add_row(const MatrixRow                     &row,
+                          const double                         weight,
+                          const types::global_dof_index        dof,
+                          const AffineConstraints<double>     &constraints,
                           TrilinosWrappers::BlockSparseMatrix &tangent)
   {
-    const auto add = [&](const types::global_dof_index target,
-                         const double                  w) {
+    const auto add = [&](const types::global_dof_index target, const double w) {
       for (unsigned int b = 0; b < row.columns.size(); ++b)
         {
           if (row.columns[b].empty())
@@ -83,28 +81,28 @@ namespace DuctileContact
 
 
   void
-  ContactProblem::condense(Pair                            &pair,
-                           const AffineConstraints<double> &constraints,
-                           const AssemblyTargets           &targets)
+  ContactProblem::condensed_states(Pair                            &pair,
+                                   const AffineConstraints<double> &constraints,
+                                   const AssemblyTargets           &targets,
+                                   CondensedNodes                  &nodes)
   {
-    Assert(targets.residual != nullptr, ExcInternalError());
-    const MPI_Comm comm = discretisation.dof_handler.get_communicator();
     const ContactSurface &slave = pair.slave;
     const unsigned int    ns    = slave.nodes.size();
     const auto           &R     = *targets.residual;
+    nodes.owned.assign(ns, false);
+    nodes.free.assign(ns, {});
+    nodes.law.assign(ns, NodalComplementarity());
 
-    // The condensed multipliers f_j = -R_j / A_j of the owned nodes
-    // (components fixed by a Dirichlet condition carry none), summed over
-    // the ranks so that every rank has the states for the summary.
-    std::vector<bool>                 owned(ns, false);
-    std::vector<std::array<bool, dim>> free(ns);
-    std::vector<double>               f(dim * ns, 0.);
+    // f_j = -R_j / A_j on the owned nodes (components fixed by a Dirichlet
+    // condition carry none), summed over the ranks so that every rank has
+    // the states for the summary.
+    std::vector<double> f(dim * ns, 0.);
     for (unsigned int j = 0; j < ns; ++j)
       {
         const auto &dofs = slave.nodes[j].dofs;
-        owned[j] = pair.carries_contact(j) &&
-                   discretisation.locally_owned_dofs.is_element(dofs[0]);
-        if (!owned[j])
+        nodes.owned[j]   = pair.carries_contact(j) &&
+                         discretisation.locally_owned_dofs.is_element(dofs[0]);
+        if (!nodes.owned[j])
           continue;
         for (unsigned int c = 0; c < dim; ++c)
           {
@@ -117,14 +115,13 @@ namespace DuctileContact
                 "semi-smooth Newton enforcement does not support; refine "
                 "the slave surface uniformly or set Enforcement = "
                 "augmented Lagrangian"));
-            free[j][c] = !constraints.is_constrained(dofs[c]);
-            if (free[j][c])
+            nodes.free[j][c] = !constraints.is_constrained(dofs[c]);
+            if (nodes.free[j][c])
               f[dim * j + c] = -R(dofs[c]) / pair.aggregates[j].area;
           }
       }
-    Utilities::MPI::sum(f, comm, f);
+    Utilities::MPI::sum(f, discretisation.dof_handler.get_communicator(), f);
 
-    std::vector<NodalComplementarity> law(ns);
     for (unsigned int j = 0; j < ns; ++j)
       {
         if (!pair.carries_contact(j))
@@ -132,196 +129,264 @@ namespace DuctileContact
         Tensor<1, dim> fj;
         for (unsigned int c = 0; c < dim; ++c)
           fj[c] = f[dim * j + c];
-        law[j]                   = nodal_complementarity(pair.aggregates[j], fj, pair.law);
+        const NodalComplementarity &law = nodes.law[j] =
+          nodal_complementarity(pair.aggregates[j], fj, pair.law);
         NodalContactState &state = pair.nodal[j];
-        state.gap                = law[j].gap;
-        state.pressure           = law[j].pressure;
-        state.active             = law[j].active;
-        state.traction           = law[j].traction;
-        state.slip               = law[j].slip;
-        state.friction_state     = law[j].friction_state;
-        state.dissipation        = law[j].dissipation;
+        state.gap                = law.gap;
+        state.pressure           = law.pressure;
+        state.active             = law.active;
+        state.traction           = law.traction;
+        state.slip               = law.slip;
+        state.friction_state     = law.friction_state;
+        state.dissipation        = law.dissipation;
         state.force_density      = fj;
       }
     summarise(pair);
+  }
 
-    const bool tangent = targets.tangent != nullptr;
-    std::vector<std::map<unsigned int, std::array<double, 10>>> gradients(ns);
-    if (tangent)
-      linearise_operators(pair, owned, false, constraints, targets, gradients);
 
-    // Master rows through the constraints: vector entries first.
-    const auto add_vector = [&](TrilinosWrappers::MPI::BlockVector *v,
-                                const AffineConstraints<double>    &c,
-                                const types::global_dof_index       dof,
-                                const double                        value) {
+
+  ContactProblem::Matrix3
+  ContactProblem::CondensedNodes::row_weights(const unsigned int j,
+                                              const double       area) const
+  {
+    // S = dC/df P / A; a row fixed by a Dirichlet condition stays as it is.
+    Matrix3 S;
+    for (unsigned int r = 0; r < dim; ++r)
+      for (unsigned int c = 0; c < dim; ++c)
+        S[r][c] = !free[j][r]  ? (r == c ? 1. : 0.)
+                  : free[j][c] ? law[j].jacobian[r][10 + c] / area
+                               : 0.;
+    return S;
+  }
+
+
+
+  void
+  ContactProblem::add_condensed_vectors(
+    const Pair                      &pair,
+    const unsigned int               j,
+    const CondensedNodes            &nodes,
+    const AffineConstraints<double> &constraints,
+    const AssemblyTargets           &targets) const
+  {
+    const double            A    = pair.aggregates[j].area;
+    const auto             &dofs = pair.slave.nodes[j].dofs;
+    const auto             &C    = nodes.law[j].value;
+    const Tensor<1, dim>   &f    = pair.nodal[j].force_density;
+    const Matrix3           S    = nodes.row_weights(j, A);
+    std::array<double, dim> R{}, rhs{};
+    for (unsigned int c = 0; c < dim; ++c)
+      if (nodes.free[j][c])
+        {
+          R[c]   = (*targets.residual)(dofs[c]);
+          rhs[c] = targets.newton_rhs ? (*targets.newton_rhs)(dofs[c]) : 0.;
+        }
+    const auto add = [](TrilinosWrappers::MPI::BlockVector *v,
+                        const types::global_dof_index       dof,
+                        const double                        value) {
+      if (v)
+        v->add(std::vector<types::global_dof_index>{dof},
+               std::vector<double>{value});
+    };
+    // Slave rows: R_j -> -C_j; the right-hand side C + S (rhs_j + R_j)
+    // (rhs_j holds -R_j and the prescribed values of the iterate).
+    for (unsigned int r = 0; r < dim; ++r)
+      {
+        if (!nodes.free[j][r])
+          continue;
+        double rhs_new = C[r];
+        for (unsigned int c = 0; c < dim; ++c)
+          rhs_new += S[r][c] * (rhs[c] + R[c]);
+        add(targets.residual, dofs[r], -C[r] - R[r]);
+        add(targets.newton_rhs, dofs[r], rhs_new - rhs[r]);
+        add(targets.internal_force, dofs[r], A * f[r]);
+      }
+    // Master rows: -M_jl f_j, right-hand side M_jl / A rhs_j, through the
+    // constraints.
+    const auto distribute = [](TrilinosWrappers::MPI::BlockVector *v,
+                               const AffineConstraints<double>    &c,
+                               const types::global_dof_index       dof,
+                               const double                        value) {
       if (v == nullptr)
         return;
-      const std::vector<types::global_dof_index> index{dof};
-      Vector<double>                             x(1);
+      Vector<double> x(1);
       x[0] = value;
-      c.distribute_local_to_global(x, index, *v);
+      c.distribute_local_to_global(x,
+                                   std::vector<types::global_dof_index>{dof},
+                                   *v);
     };
+    for (const auto &[l, m] : pair.M[j])
+      for (unsigned int r = 0; r < dim; ++r)
+        {
+          const auto dof = pair.master.nodes[l].dofs[r];
+          distribute(targets.residual, constraints, dof, -m * f[r]);
+          distribute(targets.newton_rhs, constraints, dof, m / A * rhs[r]);
+          distribute(targets.internal_force,
+                     discretisation.hanging_node_constraints,
+                     dof,
+                     -m * f[r]);
+        }
+  }
 
+
+
+  void
+  ContactProblem::combine_rows(
+    const Pair                          &pair,
+    const unsigned int                   j,
+    const CondensedNodes                &nodes,
+    const AffineConstraints<double>     &constraints,
+    TrilinosWrappers::BlockSparseMatrix &tangent) const
+  {
+    const double  A    = pair.aggregates[j].area;
+    const auto   &dofs = pair.slave.nodes[j].dofs;
+    const Matrix3 S    = nodes.row_weights(j, A);
+    // All three rows are read before any of them changes.
+    const unsigned int         n_blocks = tangent.n_block_cols();
     std::array<MatrixRow, dim> rows;
-    FullMatrix<double> matrix;
-    Vector<double>     zero;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        rows[c].columns.assign(n_blocks, {});
+        rows[c].values.assign(n_blocks, {});
+        if (!nodes.free[j][c])
+          continue;
+        for (unsigned int b = 0; b < n_blocks; ++b)
+          {
+            if (tangent.block(0, b).n() == 0)
+              continue;
+            // The row as Epetra stores it (deal.II's row iterator looks up
+            // every entry again).
+            const Epetra_CrsMatrix &epetra =
+              tangent.block(0, b).trilinos_matrix();
+            int     n = 0;
+            double *values;
+            int    *local_columns;
+            epetra.ExtractMyRowView(epetra.LRID(
+                                      static_cast<long long>(dofs[c])),
+                                    n,
+                                    values,
+                                    local_columns);
+            for (int e = 0; e < n; ++e)
+              if (values[e] != 0.)
+                {
+                  rows[c].columns[b].push_back(
+                    epetra.ColMap().GID64(local_columns[e]));
+                  rows[c].values[b].push_back(values[e]);
+                }
+          }
+      }
+    // Slave rows S K_j, master rows + M_jl / A K_j.
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        if (!nodes.free[j][c])
+          continue;
+        for (unsigned int r = 0; r < dim; ++r)
+          if (nodes.free[j][r] && S[r][c] != (r == c ? 1. : 0.))
+            add_row(rows[c],
+                    S[r][c] - (r == c ? 1. : 0.),
+                    dofs[r],
+                    constraints,
+                    tangent);
+        for (const auto &[l, m] : pair.M[j])
+          add_row(
+            rows[c], m / A, pair.master.nodes[l].dofs[c], constraints, tangent);
+      }
+  }
+
+
+
+  void
+  ContactProblem::add_aggregate_terms(
+    const Pair                                     &pair,
+    const unsigned int                              j,
+    const CondensedNodes                           &nodes,
+    std::map<unsigned int, std::array<double, 10>> &g,
+    const AffineConstraints<double>                &constraints,
+    const AssemblyTargets                          &targets) const
+  {
+    // Slave rows -(dC/da - dC/df f / A e_A) da, master rows M_jl / A f dA
+    // (da/dx in g: through dD and dM already, here the direct part).
+    const unsigned int    ns = pair.slave.nodes.size();
+    const double          A  = pair.aggregates[j].area;
+    const auto           &J  = nodes.law[j].jacobian;
+    const Tensor<1, dim> &f  = pair.nodal[j].force_density;
+    add_direct_gradients(pair, j, g);
+    std::map<unsigned int, unsigned int> local;
+    for (unsigned int r = 0; r < dim; ++r)
+      local.emplace(3 * j + r, 0);
+    for (const auto &[l, m] : pair.M[j])
+      for (unsigned int r = 0; r < dim; ++r)
+        local.emplace(3 * (ns + l) + r, 0);
+    for (const auto &entry : g)
+      local.emplace(entry.first, 0);
     std::vector<types::global_dof_index> indices;
+    for (auto &[key, position] : local)
+      {
+        position = indices.size();
+        indices.push_back(coordinate_dof(pair, key));
+      }
+    FullMatrix<double> matrix(indices.size(), indices.size());
+    Vector<double>     zero(indices.size());
+    std::array<std::array<double, 10>, dim> Js;
+    for (unsigned int r = 0; r < dim; ++r)
+      {
+        double Cf_f = 0.;
+        for (unsigned int c = 0; c < dim; ++c)
+          Cf_f += J[r][10 + c] * f[c];
+        for (unsigned int a = 0; a < 10; ++a)
+          Js[r][a] = nodes.free[j][r] ? J[r][a] - (a == 0 ? Cf_f / A : 0.) : 0.;
+      }
+    for (const auto &[key, e] : g)
+      {
+        const unsigned int column = local[key];
+        for (unsigned int r = 0; r < dim; ++r)
+          {
+            double v = 0.;
+            for (unsigned int a = 0; a < 10; ++a)
+              v += Js[r][a] * e[a];
+            matrix(local[3 * j + r], column) -= v;
+          }
+        for (const auto &[l, m] : pair.M[j])
+          for (unsigned int r = 0; r < dim; ++r)
+            matrix(local[3 * (ns + l) + r], column) += m / A * f[r] * e[0];
+      }
+    AssemblyTargets matrix_only = targets;
+    matrix_only.residual        = nullptr;
+    matrix_only.internal_force  = nullptr;
+    scatter(matrix,
+            zero,
+            zero,
+            indices,
+            constraints,
+            discretisation.hanging_node_constraints,
+            matrix_only);
+  }
+
+
+
+  void
+  ContactProblem::condense(Pair                            &pair,
+                           const AffineConstraints<double> &constraints,
+                           const AssemblyTargets           &targets)
+  {
+    Assert(targets.residual != nullptr, ExcInternalError());
+    CondensedNodes nodes;
+    condensed_states(pair, constraints, targets, nodes);
+    const unsigned int ns = pair.slave.nodes.size();
+    std::vector<std::map<unsigned int, std::array<double, 10>>> gradients(ns);
+    if (targets.tangent)
+      linearise_operators(
+        pair, nodes.owned, false, constraints, targets, gradients);
     for (unsigned int j = 0; j < ns; ++j)
       {
-        if (!owned[j])
+        if (!nodes.owned[j])
           continue;
-        const double          A    = pair.aggregates[j].area;
-        const auto           &dofs = slave.nodes[j].dofs;
-        const auto           &J    = law[j].jacobian;
-        const Tensor<1, dim> &fj   = pair.nodal[j].force_density;
-        // S = dC/df P / A: the slave rows become S K_j (free rows only).
-        FullMatrix<double> S(dim, dim);
-        for (unsigned int r = 0; r < dim; ++r)
-          for (unsigned int c = 0; c < dim; ++c)
-            S(r, c) = !free[j][r] ? (r == c ? 1. : 0.) :
-                      free[j][c]  ? J[r][10 + c] / A :
-                                    0.;
-        std::array<double, dim> Rj{}, rhs_j{};
-        for (unsigned int c = 0; c < dim; ++c)
-          if (free[j][c])
-            {
-              Rj[c]    = R(dofs[c]);
-              rhs_j[c] = targets.newton_rhs ? (*targets.newton_rhs)(dofs[c]) : 0.;
-            }
-        for (unsigned int r = 0; r < dim; ++r)
-          {
-            if (!free[j][r])
-              continue;
-            double rhs_new = law[j].value[r];
-            for (unsigned int c = 0; c < dim; ++c)
-              rhs_new += S(r, c) * (rhs_j[c] + Rj[c]);
-            targets.residual->add(std::vector<types::global_dof_index>{dofs[r]},
-                                  std::vector<double>{-law[j].value[r] - Rj[r]});
-            if (targets.newton_rhs)
-              targets.newton_rhs->add(
-                std::vector<types::global_dof_index>{dofs[r]},
-                std::vector<double>{rhs_new - rhs_j[r]});
-            if (targets.internal_force)
-              targets.internal_force->add(
-                std::vector<types::global_dof_index>{dofs[r]},
-                std::vector<double>{A * fj[r]});
-          }
-        for (const auto &[l, m] : pair.M[j])
-          for (unsigned int r = 0; r < dim; ++r)
-            {
-              const auto dof = pair.master.nodes[l].dofs[r];
-              add_vector(targets.residual, constraints, dof, -m * fj[r]);
-              add_vector(targets.newton_rhs, constraints, dof, m / A * rhs_j[r]);
-              add_vector(targets.internal_force,
-                         discretisation.hanging_node_constraints,
-                         dof,
-                         -m * fj[r]);
-            }
-        if (!tangent)
+        add_condensed_vectors(pair, j, nodes, constraints, targets);
+        if (!targets.tangent)
           continue;
-
-        // Row combinations of the bulk tangent: all three rows are read
-        // before any of them changes.
-        const unsigned int n_blocks = targets.tangent->n_block_cols();
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            rows[c].columns.assign(n_blocks, {});
-            rows[c].values.assign(n_blocks, {});
-            if (!free[j][c])
-              continue;
-            for (unsigned int b = 0; b < n_blocks; ++b)
-              {
-                const auto &block = targets.tangent->block(0, b);
-                if (block.n() == 0)
-                  continue;
-                // The row as Epetra stores it (deal.II's row iterator looks
-                // up every entry again).
-                const Epetra_CrsMatrix &epetra = block.trilinos_matrix();
-                const int row = epetra.LRID(static_cast<long long>(dofs[c]));
-                int       n   = 0;
-                double   *values;
-                int      *local_columns;
-                epetra.ExtractMyRowView(row, n, values, local_columns);
-                for (int e = 0; e < n; ++e)
-                  if (values[e] != 0.)
-                    {
-                      rows[c].columns[b].push_back(
-                        epetra.ColMap().GID64(local_columns[e]));
-                      rows[c].values[b].push_back(values[e]);
-                    }
-              }
-          }
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            if (!free[j][c])
-              continue;
-            for (unsigned int r = 0; r < dim; ++r)
-              if (free[j][r])
-                {
-                  const double w = S(r, c) - (r == c ? 1. : 0.);
-                  if (w != 0.)
-                    add_row(rows[c], w, dofs[r], constraints, *targets.tangent);
-                }
-            for (const auto &[l, m] : pair.M[j])
-              add_row(rows[c], m / A, pair.master.nodes[l].dofs[c], constraints,
-                      *targets.tangent);
-          }
-
-        // Terms of d(aggregates): slave rows -(dC/da - dC/df f / A e_A) da,
-        // master rows M_jl / A f dA.
-        auto &g = gradients[j];
-        add_direct_gradients(pair, j, g);
-        std::map<unsigned int, unsigned int> local;
-        for (unsigned int r = 0; r < dim; ++r)
-          local.emplace(3 * j + r, 0);
-        for (const auto &[l, m] : pair.M[j])
-          for (unsigned int r = 0; r < dim; ++r)
-            local.emplace(3 * (ns + l) + r, 0);
-        for (const auto &entry : g)
-          local.emplace(entry.first, 0);
-        indices.clear();
-        for (auto &[key, position] : local)
-          {
-            position = indices.size();
-            indices.push_back(coordinate_dof(pair, key));
-          }
-        const unsigned int size = indices.size();
-        matrix.reinit(size, size);
-        zero.reinit(size);
-        std::array<std::array<double, 10>, dim> Js;
-        for (unsigned int r = 0; r < dim; ++r)
-          {
-            double Cf_f = 0.;
-            for (unsigned int c = 0; c < dim; ++c)
-              Cf_f += J[r][10 + c] * fj[c];
-            for (unsigned int a = 0; a < 10; ++a)
-              Js[r][a] = free[j][r] ? J[r][a] - (a == 0 ? Cf_f / A : 0.) : 0.;
-          }
-        for (const auto &[key, e] : g)
-          {
-            const unsigned int column = local[key];
-            for (unsigned int r = 0; r < dim; ++r)
-              {
-                double v = 0.;
-                for (unsigned int a = 0; a < 10; ++a)
-                  v += Js[r][a] * e[a];
-                matrix(local[3 * j + r], column) -= v;
-              }
-            for (const auto &[l, m] : pair.M[j])
-              for (unsigned int r = 0; r < dim; ++r)
-                matrix(local[3 * (ns + l) + r], column) += m / A * fj[r] * e[0];
-          }
-        AssemblyTargets matrix_only = targets;
-        matrix_only.residual        = nullptr;
-        matrix_only.internal_force  = nullptr;
-        scatter(matrix,
-                zero,
-                zero,
-                indices,
-                constraints,
-                discretisation.hanging_node_constraints,
-                matrix_only);
+        combine_rows(pair, j, nodes, constraints, *targets.tangent);
+        add_aggregate_terms(pair, j, nodes, gradients[j], constraints, targets);
       }
   }
 } // namespace DuctileContact

@@ -83,13 +83,13 @@ namespace DuctileContact
         };
         const double E =
           std::min(youngs_modulus(pair.slave), youngs_modulus(pair.master));
-        const double h    = pair.slave.smallest_face_size();
-        pair.index        = p;
-        pair.dual         = prm.multiplier_basis == MultiplierBasis::dual;
+        const double h = pair.slave.smallest_face_size();
+        pair.index     = p;
+        pair.dual      = prm.multiplier_basis == MultiplierBasis::dual;
         pair.semi_smooth =
           prm.enforcement == ContactEnforcement::semi_smooth_newton;
-        pair.law.penalty  = prm.penalty_factor * E / h;
-        pair.law.friction = prm.friction_coefficient;
+        pair.law.penalty            = prm.penalty_factor * E / h;
+        pair.law.friction           = prm.friction_coefficient;
         pair.law.tangential_penalty = prm.tangential_penalty_factor * E / h;
         // Active also when just touching (a gap at round-off level): then
         // the tangent holds the contact stiffness of a closed interface, so
@@ -268,9 +268,10 @@ namespace DuctileContact
       {
         // Semi-smooth Newton: the master rows take the bulk rows of the
         // slave nodes (condense()).
-        const auto columns = pair.semi_smooth ?
-                               slave_row_columns(pair) :
-                               std::vector<std::vector<types::global_dof_index>>();
+        const auto columns =
+          pair.semi_smooth
+            ? slave_row_columns(pair)
+            : std::vector<std::vector<types::global_dof_index>>();
         for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
           {
             if (!discretisation.locally_owned_dofs.is_element(
@@ -287,7 +288,9 @@ namespace DuctileContact
               master_rows.insert(master_rows.end(),
                                  pair.master.nodes[l].dofs.begin(),
                                  pair.master.nodes[l].dofs.end());
-            indices.insert(indices.end(), master_rows.begin(), master_rows.end());
+            indices.insert(indices.end(),
+                           master_rows.begin(),
+                           master_rows.end());
             all_constraints.add_entries_local_to_global(indices, sp, false);
             if (pair.semi_smooth && !m.empty())
               all_constraints.add_entries_local_to_global(master_rows,
@@ -577,8 +580,8 @@ namespace DuctileContact
     for (const unsigned int f : slave.node_faces[j])
       {
         const auto &nodes = slave.faces[f].nodes;
-        const auto  i = std::find(nodes.begin(), nodes.end(), j) - nodes.begin();
-        const auto  dn =
+        const auto i = std::find(nodes.begin(), nodes.end(), j) - nodes.begin();
+        const auto dn =
           pair.slave_faces[f].normal_derivatives(Quad9::node_parameter(i));
         for (unsigned int r = 0; r < 9; ++r)
           {
@@ -607,9 +610,9 @@ namespace DuctileContact
     const unsigned int                   ns    = slave.nodes.size();
     std::vector<bool>                    needed(ns);
     for (unsigned int j = 0; j < ns; ++j)
-      needed[j] = pair.nodal[j].active &&
-                  discretisation.locally_owned_dofs.is_element(
-                    slave.nodes[j].dofs[0]);
+      needed[j] =
+        pair.nodal[j].active &&
+        discretisation.locally_owned_dofs.is_element(slave.nodes[j].dofs[0]);
     // d(aggregates)/dx: through D and M, then directly.
     std::vector<std::map<unsigned int, std::array<double, 10>>> gradients(ns);
     const bool tangent = targets.tangent != nullptr;

@@ -15,7 +15,7 @@ namespace DuctileContact
     constexpr unsigned int n_args = complementarity_arguments;
     using AD                      = Sacado::Fad::SFad<double, n_args>;
     using V                       = std::array<AD, dim>;
-    const auto dot = [](const V &x, const V &y) -> AD {
+    const auto dot                = [](const V &x, const V &y) -> AD {
       return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
     };
 
@@ -53,8 +53,8 @@ namespace DuctileContact
     else
       {
         result.pressure = std::max(0., lambda.val());
-        V          C_T  = t;
-        const AD   bound = p.friction * lambda_aug;
+        V        C_T    = t;
+        const AD bound  = p.friction * lambda_aug;
         if (p.friction > 0. && bound.val() > 0.)
           {
             V tau;

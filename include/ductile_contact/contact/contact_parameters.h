@@ -84,7 +84,7 @@ namespace DuctileContact
     /// diagonal) or standard (Phi_j = N_j).
     MultiplierBasis multiplier_basis = MultiplierBasis::dual;
     /// Uzawa updates per load step before the step counts as failed.
-    unsigned int max_augmentations = 30;
+    unsigned int       max_augmentations = 30;
     ContactEnforcement enforcement = ContactEnforcement::semi_smooth_newton;
 
     void

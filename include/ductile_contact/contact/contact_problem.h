@@ -176,10 +176,10 @@ namespace DuctileContact
   private:
     struct Pair
     {
-      unsigned int           index = 0; ///< position in pairs and summaries
-      ContactSurface         slave, master;
-      bool                   dual = true; ///< dual or standard multiplier basis
-      bool semi_smooth = false; ///< ContactEnforcement::semi_smooth_newton
+      unsigned int   index = 0; ///< position in pairs and summaries
+      ContactSurface slave, master;
+      bool           dual = true;  ///< dual or standard multiplier basis
+      bool semi_smooth    = false; ///< ContactEnforcement::semi_smooth_newton
       NodalContactParameters law;
       double                 search_radius = 0., tolerance = 0.; ///< [m]
       double                 face_size = 0.; ///< smallest slave face size [m]
@@ -248,6 +248,58 @@ namespace DuctileContact
              const dealii::AffineConstraints<double> &constraints,
              const AssemblyTargets                   &targets);
 
+    using Matrix3 = std::array<std::array<double, dim>, dim>;
+
+    /// What condense() knows of the slave nodes: which this rank
+    /// condenses, which of their DoFs are free, their complementarity.
+    struct CondensedNodes
+    {
+      std::vector<bool>                  owned;
+      std::vector<std::array<bool, dim>> free;
+      std::vector<NodalComplementarity>  law;
+
+      /// S = (dC/df) P / A_j, the weights of the bulk rows of node @p j in
+      /// its new rows (identity in a row fixed by a Dirichlet condition).
+      Matrix3
+      row_weights(const unsigned int j, const double area) const;
+    };
+
+    /// The tractions f_j = -R_j / A_j (from the compressed residual of
+    /// @p targets), the complementarity of every node and the summary.
+    void
+    condensed_states(Pair                                    &pair,
+                     const dealii::AffineConstraints<double> &constraints,
+                     const AssemblyTargets                   &targets,
+                     CondensedNodes                          &nodes);
+
+    /// Residual, right-hand side and internal force of the slave rows of
+    /// node @p j and of the master rows it couples to.
+    void
+    add_condensed_vectors(const Pair                              &pair,
+                          const unsigned int                       j,
+                          const CondensedNodes                    &nodes,
+                          const dealii::AffineConstraints<double> &constraints,
+                          const AssemblyTargets &targets) const;
+
+    /// The bulk tangent rows of node @p j: S K_j in its own rows, M_jl /
+    /// A_j K_j added to the master rows.
+    void
+    combine_rows(const Pair                                  &pair,
+                 const unsigned int                           j,
+                 const CondensedNodes                        &nodes,
+                 const dealii::AffineConstraints<double>     &constraints,
+                 dealii::TrilinosWrappers::BlockSparseMatrix &tangent) const;
+
+    /// The tangent terms of node @p j through its aggregates (@p g holds
+    /// their derivatives through dD and dM).
+    void
+    add_aggregate_terms(const Pair                                     &pair,
+                        const unsigned int                              j,
+                        const CondensedNodes                           &nodes,
+                        std::map<unsigned int, std::array<double, 10>> &g,
+                        const dealii::AffineConstraints<double> &constraints,
+                        const AssemblyTargets                   &targets) const;
+
     /// Adds @p weight times the rows @p rows of the tangent (read before
     /// any change) to the row of @p dof, through @p constraints (a
     /// Dirichlet row takes nothing, a hanging row goes to its parents).
@@ -255,13 +307,13 @@ namespace DuctileContact
     {
       /// Per block column b: block-local columns and values.
       std::vector<std::vector<dealii::types::global_dof_index>> columns;
-      std::vector<std::vector<double>>       values;
+      std::vector<std::vector<double>>                          values;
     };
     static void
-    add_row(const MatrixRow                         &row,
-            const double                             weight,
-            const dealii::types::global_dof_index    dof,
-            const dealii::AffineConstraints<double> &constraints,
+    add_row(const MatrixRow                             &row,
+            const double                                 weight,
+            const dealii::types::global_dof_index        dof,
+            const dealii::AffineConstraints<double>     &constraints,
             dealii::TrilinosWrappers::BlockSparseMatrix &tangent);
 
     /// d(aggregates of node j)/dx from the derivatives of D and M
@@ -282,8 +334,8 @@ namespace DuctileContact
     /// Adds to @p g the derivatives of the aggregates of node @p j with
     /// D and M held (G, H through the positions) and of its normal.
     static void
-    add_direct_gradients(const Pair                                 &pair,
-                         const unsigned int                          j,
+    add_direct_gradients(const Pair                                     &pair,
+                         const unsigned int                              j,
                          std::map<unsigned int, std::array<double, 10>> &g);
 
     /// Columns of the bulk rows of the owned slave nodes of @p pair (DoFs

@@ -43,7 +43,7 @@ namespace DuctileContact
     /// Whether dP/dF has the major symmetry (the second derivative of an
     /// energy, as for neo_hooke()): then the u-u block of a cell matrix is
     /// symmetric and half of it is computed (cell_rows.h).
-    bool symmetric_tangent = false;
+    bool                   symmetric_tangent = false;
     dealii::Tensor<2, dim> dP_dalpha, dP_ds;
     /// Local part r of the hardening equation (50) per unit volume and its
     /// derivatives (plastic bodies only).
