@@ -10,7 +10,7 @@
 //  - The paper's block on the plate (coarse copy of prm/two_bodies.prm,
 //    mu_c = 0.2, 3 steps): the condensed tangent against central finite
 //    differences of the whole condensed residual (frictionless, sticking
-//    and slipping nodes at once) and at most 4 Newton iterations per step.
+//    and slipping nodes at once) and at most 5 Newton iterations per step.
 //    (The patch test's flush edges put kinks into the residual, so its
 //    tangent is not checked there.)
 //  - Coulomb sliding of contact_friction (mu_c = 0.3): the interface

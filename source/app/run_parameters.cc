@@ -168,8 +168,28 @@ namespace DuctileContact
       b.check();
     for (BoundaryCondition &bc : boundary_conditions)
       bc.check();
+    const bool phase_field =
+      std::any_of(bodies.begin(), bodies.end(), [](const BodyParameters &b) {
+        return b.fracture;
+      });
     for (const ContactPairParameters &c : contact_pairs)
-      c.check();
+      {
+        c.check();
+        // The staggered solves of s freeze u, and the semi-smooth Newton
+        // method condenses the contact tractions from the free u rows.
+        check_input(c.enforcement != ContactEnforcement::semi_smooth_newton ||
+                      !phase_field ||
+                      coupling.strategy == CouplingStrategy::monolithic,
+                    c.subsection() + "/Enforcement",
+                    name_of(contact_enforcement_names(), c.enforcement),
+                    "augmented Lagrangian when a body has a phase field and "
+                    "Coupling/Strategy is " +
+                      name_of(coupling_strategy_names(), coupling.strategy) +
+                      " (its phase-field solves hold the displacements, "
+                      "from whose rows the semi-smooth Newton method takes "
+                      "the contact tractions); or Coupling/Strategy = "
+                      "monolithic");
+      }
     load_stepping.check();
     newton.check();
     coupling.check();

@@ -85,7 +85,8 @@ namespace DuctileContact
       "set, exact stick; needs the dual multiplier basis and a slave "
       "surface without hanging nodes; a slave DoF fixed by a Dirichlet "
       "condition transmits no contact traction, which suits symmetry "
-      "planes and rollers normal to the surface).");
+      "planes and rollers whose direction is tangential to the "
+      "surface).");
     prm.add_parameter("Maximum augmentations",
                       max_augmentations,
                       "Multiplier (Uzawa) updates per load step before the "

@@ -116,6 +116,45 @@ namespace DuctileContact
         pair.committed_multiplier = pair.multiplier;
       }
     surface.compress();
+    for (const Pair &pair : data)
+      if (pair.semi_smooth)
+        check_condensable(pair);
+  }
+
+
+
+  void
+  ContactProblem::check_condensable(const Pair &pair) const
+  {
+    // The condensation replaces the rows of the slave nodes: they must be
+    // rows of their own (no hanging node) and of this pair only.
+    const std::string entry   = pairs[pair.index].subsection() + "/Enforcement";
+    bool              hanging = false;
+    for (const auto &node : pair.slave.nodes)
+      for (const auto dof : node.dofs)
+        hanging = hanging ||
+                  (discretisation.locally_owned_dofs.is_element(dof) &&
+                   discretisation.hanging_node_constraints.is_constrained(dof));
+    check_input(!Utilities::MPI::logical_or(
+                  hanging, discretisation.dof_handler.get_communicator()),
+                entry,
+                "semi-smooth Newton",
+                "augmented Lagrangian where the slave surface has hanging "
+                "nodes (the condensation needs the rows of the slave nodes); "
+                "or refine the slave surface uniformly");
+    std::set<types::global_dof_index> others;
+    for (const Pair &other : data)
+      if (&other != &pair)
+        for (const ContactSurface *side : {&other.slave, &other.master})
+          for (const auto &node : side->nodes)
+            others.insert(node.dofs[0]);
+    for (const auto &node : pair.slave.nodes)
+      check_input(others.count(node.dofs[0]) == 0,
+                  entry,
+                  "semi-smooth Newton",
+                  "augmented Lagrangian where the slave surface shares nodes "
+                  "with another contact pair (the condensation replaces the "
+                  "slave rows of one pair)");
   }
 
 

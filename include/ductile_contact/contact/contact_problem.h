@@ -220,6 +220,12 @@ namespace DuctileContact
     extend_constraints(const dealii::AffineConstraints<double> &constraints,
                        dealii::AffineConstraints<double>       &extended) const;
 
+    /// Throws InputError (on every rank) when the slave nodes of a
+    /// semi-smooth Newton pair have hanging nodes or belong to another
+    /// pair too.
+    void
+    check_condensable(const Pair &pair) const;
+
     /// D, M, normals and aggregates of @p pair on its current geometry.
     void
     integrate(Pair &pair);
