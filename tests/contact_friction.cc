@@ -23,42 +23,6 @@
 
 using namespace dealii;
 
-namespace
-{
-  std::string
-  sliding_prm(const double mu, const std::string &end_time)
-  {
-    return Testing::two_body_contact_prm("contact_patch.msh",
-                                         "1e9",
-                                         "2e9",
-                                         4,
-                                         3,
-                                         "  set Friction coefficient = " +
-                                           std::to_string(mu) + "\n") +
-           R"(
-subsection Boundary conditions
-  set Boundary ids = 1, 2
-end
-subsection Boundary 1
-  set Constrained components = x, y, z
-end
-subsection Boundary 2
-  set Constrained components = x, y
-  set Displacement           = 1e-2*max(t-1,0); 0; 0
-  set Traction               = 0; 0; -1e6*min(t,1)
-end
-subsection Load stepping
-  set End time  = )" +
-           end_time + R"(
-  set Time step = 0.125
-end
-subsection Linear solver
-  set Type = direct
-end
-)";
-  }
-
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -67,7 +31,8 @@ main(int argc, char **argv)
   std::ofstream                    out = Testing::open_output();
 
   {
-    const auto        s     = Testing::run_scene(sliding_prm(0.3, "2"), "mu03");
+    const auto s =
+      Testing::run_scene(Testing::patch_sliding_prm(0.3, "2"), "mu03");
     const std::size_t last  = s.at("time").size() - 1;
     const double      ratio = Testing::contact_norm(s, "friction", last) /
                          Testing::contact_norm(s, "force", last);
@@ -132,7 +97,8 @@ main(int argc, char **argv)
         << std::endl;
   }
   {
-    const auto        s    = Testing::run_scene(sliding_prm(0., "1.5"), "mu0");
+    const auto s =
+      Testing::run_scene(Testing::patch_sliding_prm(0., "1.5"), "mu0");
     const std::size_t last = s.at("time").size() - 1;
     std::cout << "mu 0: F2_x " << s.at("F2_x")[last] << ", F_N "
               << Testing::contact_norm(s, "force", last) << std::endl;
@@ -145,7 +111,8 @@ main(int argc, char **argv)
         << std::endl;
   }
   {
-    const auto        s = Testing::run_scene(sliding_prm(10., "1.25"), "mu10");
+    const auto s =
+      Testing::run_scene(Testing::patch_sliding_prm(10., "1.25"), "mu10");
     const std::size_t last = s.at("time").size() - 1;
     out << "mu_c = 10: every node sticks, nothing dissipated: "
         << Testing::yes_no(s.at("contact1_sticking_nodes")[last] ==

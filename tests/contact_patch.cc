@@ -13,46 +13,6 @@
 
 using namespace dealii;
 
-namespace
-{
-  std::string
-  patch_prm(const unsigned int slave, const unsigned int master)
-  {
-    return Testing::two_body_contact_prm(
-             "contact_patch.msh", "1e9", "2e9", slave, master) +
-           R"(
-subsection Boundary conditions
-  set Boundary ids = 1, 2, 5, 6, 8, 9
-end
-subsection Boundary 1
-  set Constrained components = z
-end
-subsection Boundary 2
-  set Traction = 0; 0; -1e6*t
-end
-subsection Boundary 5
-  set Constrained components = x
-end
-subsection Boundary 6
-  set Constrained components = y
-end
-subsection Boundary 8
-  set Constrained components = x
-end
-subsection Boundary 9
-  set Constrained components = y
-end
-subsection Load stepping
-  set End time  = 1
-  set Time step = 0.5
-end
-subsection Newton
-  set Relative tolerance = 1e-11
-end
-)";
-  }
-
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -73,8 +33,9 @@ main(int argc, char **argv)
        {std::tuple{4u, 3u, "finer (upper) cube as slave"},
         std::tuple{3u, 4u, "coarser (lower) cube as slave"}})
     {
-      const auto   s     = Testing::run_scene(patch_prm(slave, master),
-                                        "patch_" + std::to_string(slave));
+      const auto s =
+        Testing::run_scene(Testing::contact_patch_prm(slave, master),
+                           "patch_" + std::to_string(slave));
       const double p_max = s.at("contact1_max_pressure").back();
       const double p_min = s.at("contact1_min_pressure").back();
       const double force = s.at("contact1_force_z").back();

@@ -28,43 +28,6 @@ namespace
   const std::string semi_smooth = "  set Enforcement = semi-smooth Newton\n";
 
   std::string
-  patch_prm(const unsigned int slave, const unsigned int master)
-  {
-    return Testing::two_body_contact_prm(
-             "contact_patch.msh", "1e9", "2e9", slave, master, semi_smooth) +
-           R"(
-subsection Boundary conditions
-  set Boundary ids = 1, 2, 5, 6, 8, 9
-end
-subsection Boundary 1
-  set Constrained components = z
-end
-subsection Boundary 2
-  set Traction = 0; 0; -1e6*t
-end
-subsection Boundary 5
-  set Constrained components = x
-end
-subsection Boundary 6
-  set Constrained components = y
-end
-subsection Boundary 8
-  set Constrained components = x
-end
-subsection Boundary 9
-  set Constrained components = y
-end
-subsection Load stepping
-  set End time  = 1
-  set Time step = 0.5
-end
-subsection Newton
-  set Relative tolerance = 1e-11
-end
-)";
-  }
-
-  std::string
   block_on_plate_prm()
   {
     std::string prm = Testing::shipped_scene("two_bodies.prm");
@@ -83,37 +46,6 @@ end
 )";
   }
 
-  std::string
-  sliding_prm()
-  {
-    return Testing::two_body_contact_prm(
-             "contact_patch.msh",
-             "1e9",
-             "2e9",
-             4,
-             3,
-             semi_smooth + "  set Friction coefficient = 0.3\n") +
-           R"(
-subsection Boundary conditions
-  set Boundary ids = 1, 2
-end
-subsection Boundary 1
-  set Constrained components = x, y, z
-end
-subsection Boundary 2
-  set Constrained components = x, y
-  set Displacement           = 1e-2*max(t-1,0); 0; 0
-  set Traction               = 0; 0; -1e6*min(t,1)
-end
-subsection Load stepping
-  set End time  = 2
-  set Time step = 0.125
-end
-subsection Linear solver
-  set Type = direct
-end
-)";
-  }
 } // namespace
 
 int
@@ -131,7 +63,9 @@ main(int argc, char **argv)
        {std::tuple{4u, 3u, "finer (upper) cube as slave"},
         std::tuple{3u, 4u, "coarser (lower) cube as slave"}})
     {
-      const auto        s      = Testing::run_scene(patch_prm(slave, master),
+      const auto        s = Testing::run_scene(Testing::contact_patch_prm(slave,
+                                                                   master,
+                                                                   semi_smooth),
                                         "patch_" + std::to_string(slave));
       const std::size_t last   = s.at("time").size() - 1;
       const double      p_max  = s.at("contact1_max_pressure")[last];
@@ -190,7 +124,9 @@ main(int argc, char **argv)
   }
 
   {
-    const auto        s     = Testing::run_scene(sliding_prm(), "mu03");
+    const auto s =
+      Testing::run_scene(Testing::patch_sliding_prm(0.3, "2", semi_smooth),
+                         "mu03");
     const std::size_t last  = s.at("time").size() - 1;
     const double      ratio = Testing::contact_norm(s, "friction", last) /
                          Testing::contact_norm(s, "force", last);

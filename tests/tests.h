@@ -226,6 +226,95 @@ end
   }
 
   /**
+   * .prm text of the contact patch test (contact_patch,
+   * contact_semi_smooth): the two swirled non-matching cubes of
+   * tests/meshes/contact_patch.msh with symmetry planes through the contact
+   * surface and 1 MPa on top, frictionless pair 1 from @p slave to @p
+   * master; @p pair_entries adds entries to the pair's subsection.
+   */
+  inline std::string
+  contact_patch_prm(const unsigned int slave,
+                    const unsigned int master,
+                    const std::string &pair_entries = "")
+  {
+    return two_body_contact_prm(
+             "contact_patch.msh", "1e9", "2e9", slave, master, pair_entries) +
+           R"(
+subsection Boundary conditions
+  set Boundary ids = 1, 2, 5, 6, 8, 9
+end
+subsection Boundary 1
+  set Constrained components = z
+end
+subsection Boundary 2
+  set Traction = 0; 0; -1e6*t
+end
+subsection Boundary 5
+  set Constrained components = x
+end
+subsection Boundary 6
+  set Constrained components = y
+end
+subsection Boundary 8
+  set Constrained components = x
+end
+subsection Boundary 9
+  set Constrained components = y
+end
+subsection Load stepping
+  set End time  = 1
+  set Time step = 0.5
+end
+subsection Newton
+  set Relative tolerance = 1e-11
+end
+)";
+  }
+
+
+  /**
+   * .prm text of the sliding patch (contact_friction, contact_semi_smooth):
+   * the patch cubes, the lower one clamped, the upper one's top pressed by
+   * 1 MPa for t <= 1 and then moved along x by 1e-2 m x (t - 1), Coulomb
+   * friction @p mu, load steps 0.125 up to @p end_time; @p pair_entries
+   * adds entries to the pair's subsection.
+   */
+  inline std::string
+  patch_sliding_prm(const double       mu,
+                    const std::string &end_time,
+                    const std::string &pair_entries = "")
+  {
+    return two_body_contact_prm("contact_patch.msh",
+                                "1e9",
+                                "2e9",
+                                4,
+                                3,
+                                "  set Friction coefficient = " +
+                                  std::to_string(mu) + "\n" + pair_entries) +
+           R"(
+subsection Boundary conditions
+  set Boundary ids = 1, 2
+end
+subsection Boundary 1
+  set Constrained components = x, y, z
+end
+subsection Boundary 2
+  set Constrained components = x, y
+  set Displacement           = 1e-2*max(t-1,0); 0; 0
+  set Traction               = 0; 0; -1e6*min(t,1)
+end
+subsection Load stepping
+  set End time  = )" +
+           end_time + R"(
+  set Time step = 0.125
+end
+subsection Linear solver
+  set Type = direct
+end
+)";
+  }
+
+  /**
    * Hertz fit of nodal contact pressures: least squares of
    * p^2 = p0^2 (1 - r^2/a^2) over the nodes with p > 0 and r^2 <= @p r2_max
    * (@p r2: squared distance of each node from the centre of the contact).
