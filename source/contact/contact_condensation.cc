@@ -106,15 +106,10 @@ namespace DuctileContact
           continue;
         for (unsigned int c = 0; c < dim; ++c)
           {
-            const auto *entries = constraints.get_constraint_entries(dofs[c]);
-            AssertThrow(
-              entries == nullptr || entries->empty(),
-              ExcMessage(
-                pairs[pair.index].subsection() +
-                ": a slave node is a hanging node, which the "
-                "semi-smooth Newton enforcement does not support; refine "
-                "the slave surface uniformly or set Enforcement = "
-                "augmented Lagrangian"));
+            // No hanging node here: check_condensable() refused them.
+            Assert(constraints.get_constraint_entries(dofs[c]) == nullptr ||
+                     constraints.get_constraint_entries(dofs[c])->empty(),
+                   ExcInternalError());
             nodes.free[j][c] = !constraints.is_constrained(dofs[c]);
             if (nodes.free[j][c])
               f[dim * j + c] = -R(dofs[c]) / pair.aggregates[j].area;
@@ -312,20 +307,9 @@ namespace DuctileContact
     const auto           &J  = nodes.law[j].jacobian;
     const Tensor<1, dim> &f  = pair.nodal[j].force_density;
     add_direct_gradients(pair, j, g);
-    std::map<unsigned int, unsigned int> local;
-    for (unsigned int r = 0; r < dim; ++r)
-      local.emplace(3 * j + r, 0);
-    for (const auto &[l, m] : pair.M[j])
-      for (unsigned int r = 0; r < dim; ++r)
-        local.emplace(3 * (ns + l) + r, 0);
-    for (const auto &entry : g)
-      local.emplace(entry.first, 0);
-    std::vector<types::global_dof_index> indices;
-    for (auto &[key, position] : local)
-      {
-        position = indices.size();
-        indices.push_back(coordinate_dof(pair, key));
-      }
+    std::map<unsigned int, unsigned int>       local;
+    const std::vector<types::global_dof_index> indices =
+      local_numbering(pair, j, {j}, g, local);
     FullMatrix<double> matrix(indices.size(), indices.size());
     Vector<double>     zero(indices.size());
     std::array<std::array<double, 10>, dim> Js;

@@ -262,6 +262,35 @@ namespace DuctileContact
 
 
 
+  std::vector<types::global_dof_index>
+  ContactProblem::local_numbering(
+    const Pair                                           &pair,
+    const unsigned int                                    j,
+    const std::vector<unsigned int>                      &slave_rows,
+    const std::map<unsigned int, std::array<double, 10>> &g,
+    std::map<unsigned int, unsigned int>                 &local)
+  {
+    const unsigned int ns = pair.slave.nodes.size();
+    local.clear();
+    for (const unsigned int k : slave_rows)
+      for (unsigned int r = 0; r < dim; ++r)
+        local.emplace(3 * k + r, 0);
+    for (const auto &[l, m] : pair.M[j])
+      for (unsigned int r = 0; r < dim; ++r)
+        local.emplace(3 * (ns + l) + r, 0);
+    for (const auto &entry : g)
+      local.emplace(entry.first, 0);
+    std::vector<types::global_dof_index> indices;
+    for (auto &[key, position] : local)
+      {
+        position = indices.size();
+        indices.push_back(coordinate_dof(pair, key));
+      }
+    return indices;
+  }
+
+
+
   types::global_dof_index
   ContactProblem::coordinate_dof(const Pair &pair, const unsigned int key)
   {
@@ -669,21 +698,11 @@ namespace DuctileContact
 
         // Local system: rows D_jk f_j (slave k), -M_jl f_j (master l);
         // columns df_j/dx = (df_j/da) (da/dx).
-        std::map<unsigned int, unsigned int> local;
+        std::vector<unsigned int> slave_rows;
         for (const auto &[k, d] : pair.D[j])
-          for (unsigned int r = 0; r < dim; ++r)
-            local.emplace(3 * k + r, 0);
-        for (const auto &[l, m] : pair.M[j])
-          for (unsigned int r = 0; r < dim; ++r)
-            local.emplace(3 * (ns + l) + r, 0);
-        for (const auto &entry : g)
-          local.emplace(entry.first, 0);
-        indices.clear();
-        for (auto &[key, position] : local)
-          {
-            position = indices.size();
-            indices.push_back(coordinate_dof(pair, key));
-          }
+          slave_rows.push_back(k);
+        std::map<unsigned int, unsigned int> local;
+        indices = local_numbering(pair, j, slave_rows, g, local);
         const unsigned int size = indices.size();
         matrix.reinit(size, size);
         rhs.reinit(size);

@@ -349,6 +349,17 @@ namespace DuctileContact
     std::vector<std::vector<dealii::types::global_dof_index>>
     slave_row_columns(const Pair &pair) const;
 
+    /// The local numbering of the contact system of slave node @p j: the
+    /// coordinate keys of the slave nodes @p slave_rows, of the master nodes
+    /// of M_j and of the columns in @p g get their positions in @p local;
+    /// returns their DoFs in that order.
+    static std::vector<dealii::types::global_dof_index>
+    local_numbering(const Pair                      &pair,
+                    const unsigned int               j,
+                    const std::vector<unsigned int> &slave_rows,
+                    const std::map<unsigned int, std::array<double, 10>> &g,
+                    std::map<unsigned int, unsigned int> &local);
+
     /// The DoF of coordinate @p key = 3 node + c (master nodes numbered
     /// after the slave nodes), the keys of linearise_operators().
     static dealii::types::global_dof_index
