@@ -43,19 +43,6 @@ namespace DuctileContact
 
 
 
-  double
-  integrated_hardening(const double alpha, const PlasticityParameters &p)
-  {
-    const double eta = p.saturation_exponent;
-    const double saturation =
-      eta > 0. ? alpha - (1. - std::exp(-eta * alpha)) / eta : 0.;
-    return p.initial_yield * alpha +
-           (p.saturation_yield - p.initial_yield) * saturation +
-           0.5 * p.linear_hardening * alpha * alpha;
-  }
-
-
-
   C0IPCoefficients
   crack_coefficients(const BodyParameters &body, const unsigned int degree)
   {
@@ -191,11 +178,12 @@ namespace DuctileContact
     const double g1 = driver.g1, psi_H = driver.psi_H;
     const double scale =
       body.crack.critical_energy_release_rate / (2. * body.crack.length_scale);
-    // d(g' psi_H)/ds = g'' psi_H + g' dpsi^+/ds when loading (psi^+
+    // d(g' psi_H)/ds = g'' psi_H + g' dpsi_D/ds when loading (psi^+
     // depends on s at points that do not yield, see
     // MaterialResponse::dpsi_plus_ds).
-    const double ds_coefficient = eta_f / dt + driver.g2 * psi_H +
-                                  (driver.loading ? g1 * m.dpsi_plus_ds : 0.);
+    const DrivingEnergy &psi = driver.psi;
+    const double         ds_coefficient =
+      eta_f / dt + driver.g2 * psi_H + (driver.loading ? g1 * psi.d_ds : 0.);
     const auto &s_value = shapes.s_value;
     for (unsigned int k = 0; k < n_s; ++k)
       {
@@ -214,11 +202,10 @@ namespace DuctileContact
             for (unsigned int l = 0; l < n_u; ++l)
               rows.matrix(i, dofs.u[l]) +=
                 g1 * s_value[k] *
-                (m.dpsi_plus_dF[dofs.u_component[l]] * shapes.u_grad[l]) * JxW;
+                (psi.d_dF[dofs.u_component[l]] * shapes.u_grad[l]) * JxW;
             for (unsigned int l = 0; l < n_a; ++l)
-              rows.matrix(i, dofs.alpha[l]) += g1 * m.dpsi_plus_dalpha *
-                                               s_value[k] *
-                                               shapes.alpha_value[l] * JxW;
+              rows.matrix(i, dofs.alpha[l]) +=
+                g1 * psi.d_dalpha * s_value[k] * shapes.alpha_value[l] * JxW;
           }
       }
     if (tangent)

@@ -84,10 +84,10 @@ namespace DuctileContact
 
   namespace
   {
-    /// The crack driver of (51) at point @p q: psi^+_H = max(psi^+, H_n)
+    /// The crack driver of (51) at point @p q: psi_H = max(psi_D, H_n)
     /// with the branch evaluated, recorded or frozen.
     CrackDriver
-    crack_driver(const MaterialResponse      &m,
+    crack_driver(const DrivingEnergy         &psi,
                  const double                 psi_max,
                  const double                 s,
                  const DegradationParameters &degradation,
@@ -97,7 +97,8 @@ namespace DuctileContact
                  AssemblyReduction           &sums)
     {
       CrackDriver d;
-      d.loading = m.psi_plus > psi_max;
+      d.psi     = psi;
+      d.loading = psi.value > psi_max;
       if (targets && targets->branches == Branches::record)
         targets->branch_record->set(cell_index,
                                     q,
@@ -110,7 +111,7 @@ namespace DuctileContact
             ++sums.switch_flips;
           d.loading = frozen_loading;
         }
-      d.psi_H = d.loading ? m.psi_plus : psi_max;
+      d.psi_H = d.loading ? psi.value : psi_max;
       d.g1    = degradation_derivative(s, degradation);
       d.g2    = degradation_second_derivative(s, degradation);
       return d;
@@ -267,7 +268,7 @@ namespace DuctileContact
         std::min(sums.min_yielding_alpha_increment,
                  alpha - history.plastic.alpha);
     sums.hardening_energy +=
-      (integrated_hardening(alpha, plastic) +
+      (plastic_work_density(alpha, plastic) +
        0.5 * gradient_coefficient * scratch.grad_alpha[q].norm_square()) *
       JxW;
     if (committing)
@@ -290,6 +291,7 @@ namespace DuctileContact
 
   double
   SystemAssembler::phase_field_point(const MaterialResponse      &m,
+                                     const DrivingEnergy         &psi,
                                      const BodyParameters        &body,
                                      const DegradationParameters &degradation,
                                      const unsigned int           q,
@@ -304,16 +306,16 @@ namespace DuctileContact
                                      AssemblyReduction           &sums) const
   {
     const double psi_max =
-      crack_history ? scratch.history_n[q]->psi_plus_max : 0.;
+      crack_history ? scratch.history_n[q]->driving_energy_max : 0.;
     const CrackDriver driver = crack_driver(
-      m, psi_max, scratch.s[q], degradation, targets, cell_index, q, sums);
+      psi, psi_max, scratch.s[q], degradation, targets, cell_index, q, sums);
     const double ds   = scratch.s[q] - scratch.s_old[q];
     const double rate = ds / dt;
     sums.fracture_viscous_work_increment +=
       body.crack.viscosity * rate * rate * dt * JxW;
     if (history_new)
       {
-        history_new[q].psi_plus_max = driver.psi_H;
+        history_new[q].driving_energy_max = driver.psi_H;
         sums.history_work_increment +=
           -driver.g1 * (driver.psi_H - m.psi_plus) * ds * JxW;
       }
@@ -406,17 +408,19 @@ namespace DuctileContact
             // Only the cell averages: the crack driver, no rows.
             if (has_s)
               {
-                const CrackDriver d =
-                  crack_driver(m,
-                               crack_history
-                                 ? scratch.history_n[q]->psi_plus_max
-                                 : 0.,
-                               scratch.s[q],
-                               degradation,
-                               nullptr,
-                               index,
-                               q,
-                               sums);
+                const CrackDriver d = crack_driver(
+                  crack_driving_energy(m,
+                                       scratch.alpha[q],
+                                       body.crack.driver,
+                                       body.crack.critical_work_density,
+                                       plastic),
+                  crack_history ? scratch.history_n[q]->driving_energy_max : 0.,
+                  scratch.s[q],
+                  degradation,
+                  nullptr,
+                  index,
+                  q,
+                  sums);
                 driver_sum += -d.g1 * d.psi_H * JxW;
               }
             continue;
@@ -440,19 +444,25 @@ namespace DuctileContact
                           rows,
                           sums);
         if (has_s)
-          driver_sum += phase_field_point(m,
-                                          body,
-                                          degradation,
-                                          q,
-                                          history_new,
-                                          scratch,
-                                          dofs,
-                                          step.dt,
-                                          JxW,
-                                          targets,
-                                          index,
-                                          rows,
-                                          sums);
+          driver_sum += phase_field_point(
+            m,
+            crack_driving_energy(m,
+                                 scratch.alpha[q],
+                                 body.crack.driver,
+                                 body.crack.critical_work_density,
+                                 plastic),
+            body,
+            degradation,
+            q,
+            history_new,
+            scratch,
+            dofs,
+            step.dt,
+            JxW,
+            targets,
+            index,
+            rows,
+            sums);
         if (history_new && has_alpha)
           history_new[q].plastic = m.updated;
       }

@@ -131,6 +131,24 @@ namespace DuctileContact
       "notch). Bodies with plasticity only; 0 is the sharp switch of "
       "model.md.",
       Patterns::Double(0., 0.1));
+    add_option(prm,
+               "Crack driver",
+               crack.driver,
+               crack_driver_names(),
+               "The energy density psi_D whose history maximum drives the "
+               "crack in (51), H = -g_k'(s) max psi_D: 'elastic' is psi^+ of "
+               "model.md (27), the paper's driver; 'elastic plus plastic "
+               "work' is <psi^+ + W_p(alpha) - w_c> with W_p = int_0^alpha "
+               "yhat the plastic work density (Miehe et al. 2015/2016; "
+               "doc/model.md, crack drivers), for bodies with plasticity: "
+               "metals whose yield-limited stresses keep psi^+ far below "
+               "g_c/(2 l_f) tear only with it.");
+    prm.add_parameter("Critical work density",
+                      crack.critical_work_density,
+                      "w_c of the elastic-plus-plastic crack driver "
+                      "[J/m^3]: below it nothing drives the crack. Not read "
+                      "with Crack driver = elastic.",
+                      Patterns::Double(0.));
     prm.leave_subsection();
     prm.leave_subsection();
   }
@@ -192,6 +210,12 @@ namespace DuctileContact
                     value(crack.volumetric_switch_width),
                     "it must be 0 for a body without plasticity (the smoothed "
                     "switch is implemented for the elastic-plastic law only)");
+        check_input(plasticity || crack.driver == CrackDriverType::elastic,
+                    f + "Crack driver",
+                    name_of(crack_driver_names(), crack.driver),
+                    "'elastic' is the only driver of a body without "
+                    "plasticity (set Plasticity = true for the plastic work "
+                    "driver)");
       }
   }
 } // namespace DuctileContact

@@ -37,11 +37,13 @@ namespace DuctileContact
     /// computed by the commit pass (SystemAssembler::commit()).
     double plastic_work_increment          = 0.;
     double fracture_viscous_work_increment = 0.;
-    /// Of the committed step [J]: the work of the crack-driver history
-    /// beyond the current elastic state, int (-g_k'(s)) (psi_H - psi^+)
-    /// (s - s_n) dV >= 0 (psi_H the history maximum of psi^+, model.md
-    /// (27)). It is nonzero where psi^+ has fallen below its maximum while s
-    /// still grows (material unloading beside a running crack). The history
+    /// Of the committed step [J]: the work of the crack driver beyond the
+    /// current elastic state, int (-g_k'(s)) (psi_H - psi^+) (s - s_n) dV
+    /// (psi_H the history maximum of the driving energy psi_D, model.md
+    /// (27); crack_driving_energy()). With the elastic driver it is >= 0
+    /// and nonzero where psi^+ has fallen below its maximum while s still
+    /// grows (material unloading beside a running crack); with the plastic
+    /// work driver it also holds the work of W_p - w_c on s. The history
     /// driver is not the derivative of an energy, so the energy balance
     /// W_ext = Psi^e + plastic work + fracture energy + viscous work misses
     /// about minus this (to first order in dt); see the statistics column

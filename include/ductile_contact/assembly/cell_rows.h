@@ -49,18 +49,16 @@ namespace DuctileContact
            const LocalDofs             &dofs);
   };
 
-  /// The crack driver of (51) at a point: psi^+_H and its branch, and the
-  /// derivatives of the degradation at s.
+  /// The crack driver of (51) at a point: the driving energy psi_D of the
+  /// body's driver (crack_driving_energy()), its history maximum psi_H =
+  /// max(psi_D, H_n) and branch, and the derivatives of the degradation.
   struct CrackDriver
   {
-    double psi_H   = 0.;
-    bool   loading = false;  ///< psi^+_H = psi^+ (above the history maximum)
-    double g1 = 0., g2 = 0.; ///< g_k'(s), g_k''(s)
+    DrivingEnergy psi;
+    double        psi_H   = 0.;
+    bool          loading = false;  ///< psi_H = psi_D (above H_n)
+    double        g1 = 0., g2 = 0.; ///< g_k'(s), g_k''(s)
   };
-
-  /// int_0^alpha yhat(a) da for the saturation law (21).
-  double
-  integrated_hardening(const double alpha, const PlasticityParameters &p);
 
   /// The coefficients of g_c gamma for a body that cracks.
   C0IPCoefficients

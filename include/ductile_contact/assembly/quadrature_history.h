@@ -13,9 +13,11 @@ namespace DuctileContact
   {
     /// (C^p_n)^{-1} and alpha_n (model.md section 3).
     PlasticHistory plastic;
-    /// max over accepted steps of psi^+ (27): the crack driver history
-    /// that makes s irreversible (model.md section 2, Miehe 2010).
-    double psi_plus_max = 0.;
+    /// max over accepted steps of the crack driving energy psi_D
+    /// (crack_driving_energy(): psi^+ of (27) with the elastic driver):
+    /// the history that makes s irreversible (model.md section 2, Miehe
+    /// 2010).
+    double driving_energy_max = 0.;
   };
 
   /**

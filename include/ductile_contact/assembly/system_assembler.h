@@ -128,11 +128,13 @@ namespace DuctileContact
                     LocalRows                    &rows,
                     AssemblyReduction            &sums) const;
 
-    /// The phase-field terms of point @p q: the crack driver with its
-    /// branch, viscous work, the history (into @p history_new if not null)
-    /// and the rows of (51); returns the driver -g_k' psi^+_H JxW.
+    /// The phase-field terms of point @p q with the driving energy @p psi
+    /// (crack_driving_energy()): the history maximum with its branch,
+    /// viscous work, the history (into @p history_new if not null) and the
+    /// rows of (51); returns the driver -g_k' psi_H JxW.
     double
     phase_field_point(const MaterialResponse      &m,
+                      const DrivingEnergy         &psi,
                       const BodyParameters        &body,
                       const DegradationParameters &degradation,
                       const unsigned int           q,

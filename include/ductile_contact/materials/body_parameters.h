@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <ductile_contact/materials/crack_driver.h>
 #include <ductile_contact/materials/plasticity.h>
 
 #include <string>
@@ -30,6 +31,10 @@ namespace DuctileContact
     /// delta: half-width in J of the smoothed tension/compression switch
     /// of the split (17) (bodies with plasticity; 0: the sharp switch).
     double volumetric_switch_width = MaterialDefaults::volumetric_switch_width;
+    /// The energy that drives the crack (crack_driving_energy()).
+    CrackDriverType driver = CrackDriverType::elastic;
+    /// w_c of the elastic-plus-plastic driver [J/m^3].
+    double critical_work_density = 0.;
   };
 
   /**

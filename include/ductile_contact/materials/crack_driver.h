@@ -1,0 +1,75 @@
+#pragma once
+
+#include <deal.II/base/tensor.h>
+
+#include <ductile_contact/core/option.h>
+#include <ductile_contact/core/types.h>
+#include <ductile_contact/materials/material_response.h>
+#include <ductile_contact/materials/plasticity.h>
+
+namespace DuctileContact
+{
+  /// Fracture/Crack driver: which energy density drives the phase field.
+  enum class CrackDriverType
+  {
+    /// psi^+ of model.md (27), the paper's driver.
+    elastic,
+    /// <psi^+ + W_p(alpha) - w_c>, plastic work drives the crack too.
+    elastic_plastic
+  };
+
+  inline const NameTable<CrackDriverType> &
+  crack_driver_names()
+  {
+    static const NameTable<CrackDriverType> t{
+      {CrackDriverType::elastic, "elastic"},
+      {CrackDriverType::elastic_plastic, "elastic plus plastic work"}};
+    return t;
+  }
+
+  /// A crack driving energy density psi_D [J/m^3] at a material point and
+  /// its derivatives with respect to F, alpha and s.
+  struct DrivingEnergy
+  {
+    double                 value = 0.;
+    dealii::Tensor<2, dim> d_dF;
+    double                 d_dalpha = 0., d_ds = 0.;
+  };
+
+  /// Plastic work density W_p(alpha) = int_0^alpha yhat(a) da [J/m^3] of
+  /// the saturation law (21): the local part of Psi^p in (20), and the
+  /// work the flow dissipates per unit volume in the rate-independent
+  /// limit (tau : d^p = sqrt(2/3) |tau_dev| lambda_p = yhat alpha-dot on
+  /// the yield surface).
+  double
+  plastic_work_density(const double alpha, const PlasticityParameters &p);
+
+  /**
+   * The energy density psi_D that drives the crack in (51), H =
+   * -g_k'(s) max_t psi_D, a pure function of the material point's
+   * response @p m (psi^+ and its derivatives) and of alpha:
+   *
+   *  - elastic (model.md (27), the paper): psi_D = psi^+;
+   *  - elastic plus plastic work (after Miehe, Hofacker, Schaenzel &
+   *    Aldakheel 2015, CMAME 294, and Miehe, Aldakheel & Raina 2016, IJP
+   *    84: a crack driving state function of the elastic and the plastic
+   *    energy above a critical work density):
+   *      psi_D = < psi^+ + W_p(alpha) - w_c >,   <x> = max(x, 0),
+   *    with W_p of plastic_work_density() and w_c = Critical work density.
+   *    Below w_c nothing drives the crack; a metal that has dissipated
+   *    W_p ~ g_c/(2 l_f) per unit volume tears, whatever its elastic
+   *    energy (which yield-limited stresses keep small).
+   *
+   * The derivatives are exact (those of psi^+ come from the material law's
+   * automatic differentiation; dW_p/dalpha = yhat(alpha)); where the
+   * bracket is closed they are zero. The second driver does not derive
+   * from the free energy: the work it does on s beyond the elastic energy
+   * appears in the energy balance as history driving work.
+   */
+  DrivingEnergy
+  crack_driving_energy(const MaterialResponse     &m,
+                       const double                alpha,
+                       const CrackDriverType       driver,
+                       const double                critical_work_density,
+                       const PlasticityParameters &plastic);
+} // namespace DuctileContact

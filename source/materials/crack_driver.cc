@@ -1,0 +1,46 @@
+#include <ductile_contact/materials/crack_driver.h>
+
+#include <cmath>
+
+namespace DuctileContact
+{
+  double
+  plastic_work_density(const double alpha, const PlasticityParameters &p)
+  {
+    const double eta = p.saturation_exponent;
+    const double saturation =
+      eta > 0. ? alpha - (1. - std::exp(-eta * alpha)) / eta : 0.;
+    return p.initial_yield * alpha +
+           (p.saturation_yield - p.initial_yield) * saturation +
+           0.5 * p.linear_hardening * alpha * alpha;
+  }
+
+
+
+  DrivingEnergy
+  crack_driving_energy(const MaterialResponse     &m,
+                       const double                alpha,
+                       const CrackDriverType       driver,
+                       const double                critical_work_density,
+                       const PlasticityParameters &plastic)
+  {
+    DrivingEnergy d;
+    if (driver == CrackDriverType::elastic)
+      {
+        d.value    = m.psi_plus;
+        d.d_dF     = m.dpsi_plus_dF;
+        d.d_dalpha = m.dpsi_plus_dalpha;
+        d.d_ds     = m.dpsi_plus_ds;
+        return d;
+      }
+    const double above = m.psi_plus + plastic_work_density(alpha, plastic) -
+                         critical_work_density;
+    if (above <= 0.)
+      return d;
+    d.value    = above;
+    d.d_dF     = m.dpsi_plus_dF;
+    d.d_dalpha = m.dpsi_plus_dalpha + hardening_stress(alpha, plastic);
+    d.d_ds     = m.dpsi_plus_ds;
+    return d;
+  }
+} // namespace DuctileContact
