@@ -35,8 +35,8 @@ main()
   std::uniform_real_distribution<double> d(-1., 1.);
   // psi^+ ~ 1e-3 and W_p(alpha ~ 0.01) ~ 5e-5 in these units: w_c in
   // between opens the bracket at some samples only.
-  const double w_c          = 4e-4;
-  double       worst        = 0., elastic_error = 0., closed_value = 0.;
+  const double w_c   = 4e-4;
+  double       worst = 0., elastic_error = 0., closed_value = 0.;
   unsigned int open_samples = 0, closed_samples = 0, plastic = 0;
   for (unsigned int sample = 0; sample < 60; ++sample)
     {
@@ -46,8 +46,8 @@ main()
         for (unsigned int j = 0; j < dim; ++j)
           Fp[i][j] += 0.01 * d(gen);
       Fp /= std::cbrt(determinant(Fp));
-      h.Cp_inv         = symmetrize(invert(transpose(Fp) * Fp));
-      h.alpha          = 0.01;
+      h.Cp_inv = symmetrize(invert(transpose(Fp) * Fp));
+      h.alpha  = 0.01;
       // The last 20 samples stay near the plastic deformation of the
       // history (F = (I + A) F^p, small A): mostly below yield.
       const bool     near_yield = sample >= 40;
@@ -57,20 +57,19 @@ main()
           F[i][j] += (near_yield ? 0.001 : 0.03) * d(gen);
       if (near_yield)
         F = F * Fp;
-      const double alpha = h.alpha + 0.002 * (1.2 + d(gen));
-      const double s = 0.3, dt = 0.1;
+      const double           alpha = h.alpha + 0.002 * (1.2 + d(gen));
+      const double           s = 0.3, dt = 0.1;
       const MaterialResponse m = plastic_update(F, h, alpha, s, dt, p, true);
       plastic += m.yielding;
 
       // 1. The elastic driver.
       const DrivingEnergy e =
         crack_driving_energy(m, alpha, CrackDriverType::elastic, w_c, p);
-      elastic_error =
-        std::max({elastic_error,
-                  std::abs(e.value - m.psi_plus),
-                  (e.d_dF - m.dpsi_plus_dF).norm(),
-                  std::abs(e.d_dalpha - m.dpsi_plus_dalpha),
-                  std::abs(e.d_ds - m.dpsi_plus_ds)});
+      elastic_error = std::max({elastic_error,
+                                std::abs(e.value - m.psi_plus),
+                                (e.d_dF - m.dpsi_plus_dF).norm(),
+                                std::abs(e.d_dalpha - m.dpsi_plus_dalpha),
+                                std::abs(e.d_ds - m.dpsi_plus_ds)});
 
       // 2. The plastic work driver against central differences.
       const DrivingEnergy D = crack_driving_energy(
@@ -94,20 +93,19 @@ main()
                                     p)
           .value;
       };
-      const auto derivative = [&](const Tensor<2, dim> &dF,
-                                  const double          dalpha,
-                                  const double          ds) {
-        const double hd = 1e-5;
-        const auto   at = [&](const double t) {
-          return value_at(dF, dalpha, ds, t);
+      const auto derivative =
+        [&](const Tensor<2, dim> &dF, const double dalpha, const double ds) {
+          const double hd = 1e-5;
+          const auto   at = [&](const double t) {
+            return value_at(dF, dalpha, ds, t);
+          };
+          return (8. * (at(hd) - at(-hd)) - (at(2. * hd) - at(-2. * hd))) /
+                 (12. * hd);
         };
-        return (8. * (at(hd) - at(-hd)) - (at(2. * hd) - at(-2. * hd))) /
-               (12. * hd);
-      };
       if (D.value > 1e-4 * w_c)
         {
           ++open_samples;
-          double diff = 0., norm = 0.;
+          double     diff = 0., norm = 0.;
           const auto add = [&](const double fd, const double exact) {
             diff += (fd - exact) * (fd - exact);
             norm += exact * exact;

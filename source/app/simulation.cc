@@ -267,9 +267,15 @@ namespace DuctileContact
       }
     const auto probe_values = probes->evaluate(u_ghosted);
     for (unsigned int k = 0; k < probe_values.size(); ++k)
-      for (unsigned int d = 0; d < dim; ++d)
-        statistics.add("probe" + std::to_string(k + 1) + "_u_" + xyz[d],
-                       probe_values[k][d]);
+      {
+        const std::string name = "probe" + std::to_string(k + 1);
+        for (unsigned int d = 0; d < dim; ++d)
+          statistics.add(name + "_u_" + xyz[d], probe_values[k].u[d]);
+        if (has_block(Block::hardening))
+          statistics.add(name + "_alpha", probe_values[k].alpha);
+        if (has_block(Block::phase_field))
+          statistics.add(name + "_s", probe_values[k].s);
+      }
   }
 
 

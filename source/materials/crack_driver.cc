@@ -33,8 +33,8 @@ namespace DuctileContact
         d.d_ds     = m.dpsi_plus_ds;
         return d;
       }
-    const double above = m.psi_plus + plastic_work_density(alpha, plastic) -
-                         critical_work_density;
+    const double above =
+      m.psi_plus + plastic_work_density(alpha, plastic) - critical_work_density;
     if (above <= 0.)
       return d;
     d.value    = above;

@@ -31,8 +31,9 @@ namespace DuctileContact
       probe_points_text,
       "Material points (reference coordinates x, y, z [m], points separated "
       "by ';') whose displacement goes to the statistics columns "
-      "probe<k>_u_x/y/z [m], k = 1, 2, ... in the order given; empty: "
-      "none.",
+      "probe<k>_u_x/y/z [m], k = 1, 2, ... in the order given, and alpha "
+      "and s to probe<k>_alpha and probe<k>_s [-] in scenes that have "
+      "these fields (0 in a body without them); empty: none.",
       Patterns::Anything());
     prm.leave_subsection();
   }

@@ -107,11 +107,13 @@ namespace DuctileContact
 
 
 
-  std::vector<Tensor<1, dim>>
+  std::vector<ProbeValue>
   ProbePoints::evaluate(const TrilinosWrappers::MPI::BlockVector &u) const
   {
-    std::vector<double> values(dim * points.size(), 0.);
-    Vector<double>      local;
+    // Per point: the dim displacement components, alpha, s.
+    constexpr unsigned int n_values = dim + 2;
+    std::vector<double>    values(n_values * points.size(), 0.);
+    Vector<double>         local;
     for (unsigned int k = 0; k < points.size(); ++k)
       {
         const Location &at = locations[k];
@@ -122,9 +124,13 @@ namespace DuctileContact
         at.cell->get_dof_values(u, local);
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
-            const unsigned int c = fe.system_to_component_index(i).first;
-            if (c < dim)
-              values[dim * k + c] +=
+            const unsigned int c    = fe.system_to_component_index(i).first;
+            const unsigned int slot = c < dim                       ? c
+                                      : c == Component::hardening   ? dim
+                                      : c == Component::phase_field ? dim + 1
+                                                                    : n_values;
+            if (slot < n_values)
+              values[n_values * k + slot] +=
                 local[i] * fe.shape_value_component(i, at.unit_point, c);
           }
       }
@@ -132,10 +138,14 @@ namespace DuctileContact
     Utilities::MPI::sum(make_array_view(mine),
                         discretisation->dof_handler.get_communicator(),
                         make_array_view(values));
-    std::vector<Tensor<1, dim>> result(points.size());
+    std::vector<ProbeValue> result(points.size());
     for (unsigned int k = 0; k < points.size(); ++k)
-      for (unsigned int c = 0; c < dim; ++c)
-        result[k][c] = values[dim * k + c];
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          result[k].u[c] = values[n_values * k + c];
+        result[k].alpha = values[n_values * k + dim];
+        result[k].s     = values[n_values * k + dim + 1];
+      }
     return result;
   }
 } // namespace DuctileContact

@@ -11,8 +11,16 @@
 
 namespace DuctileContact
 {
+  /// The fields at one probe point: displacement [m], alpha and s [-]
+  /// (0 in a body that does not carry them).
+  struct ProbeValue
+  {
+    dealii::Tensor<1, dim> u;
+    double                 alpha = 0., s = 0.;
+  };
+
   /**
-   * Displacements at fixed material points (Output/Probe points, given in
+   * The fields at fixed material points (Output/Probe points, given in
    * the reference configuration): u(X_k) = sum_i N_i(X_k) u_i on the cell
    * that contains X_k. Each point is located once (setup()) on the rank
    * that owns a cell containing it (the lowest such rank if it lies on a
@@ -37,8 +45,8 @@ namespace DuctileContact
     void
     setup(const Discretisation &discretisation);
 
-    /// Displacement at every point for the solution @p u (ghosted) [m].
-    std::vector<dealii::Tensor<1, dim>>
+    /// The fields at every point for the solution @p u (ghosted).
+    std::vector<ProbeValue>
     evaluate(const dealii::TrilinosWrappers::MPI::BlockVector &u) const;
 
     std::size_t
