@@ -69,28 +69,30 @@ end
 )";
   const Testing::Table t = Testing::run_scene(prm.str(), "block_on_plate_run");
   const std::size_t    n = t.at("time").size();
-  const auto at_end = [&](const std::string &name) { return t.at(name)[n - 1]; };
+  const auto           at_end = [&](const std::string &name) {
+    return t.at(name)[n - 1];
+  };
 
-  double worst_force = 0, worst_balance = 0, min_s_change = 0;
-  bool         clamp_s_grows  = true;
-  unsigned int exact_tangent = 0;
+  double              worst_force = 0, worst_balance = 0, min_s_change = 0;
+  bool                clamp_s_grows = true;
+  unsigned int        exact_tangent = 0;
   std::vector<double> rates;
   for (std::size_t k = 1; k < n; ++k)
     {
-      const auto column = [&](const std::string &name) { return t.at(name)[k]; };
-      const Tensor<1, 3> contact({column("contact1_force_x") +
-                                    column("contact1_friction_x"),
-                                  column("contact1_force_y") +
-                                    column("contact1_friction_y"),
-                                  column("contact1_force_z") +
-                                    column("contact1_friction_z")});
+      const auto column = [&](const std::string &name) {
+        return t.at(name)[k];
+      };
+      const Tensor<1, 3> contact(
+        {column("contact1_force_x") + column("contact1_friction_x"),
+         column("contact1_force_y") + column("contact1_friction_y"),
+         column("contact1_force_z") + column("contact1_friction_z")});
       const Tensor<1, 3> reaction(
         {column("F2_x"), column("F2_y"), column("F2_z")});
       worst_force =
         std::max(worst_force, (contact - reaction).norm() / reaction.norm());
-      worst_balance = std::max(worst_balance,
-                               std::abs(column("energy_residual")) /
-                                 column("external_work"));
+      worst_balance =
+        std::max(worst_balance,
+                 std::abs(column("energy_residual")) / column("external_work"));
       min_s_change = std::min(min_s_change, column("min_s_change"));
       if (column("probe1_alpha") > 0. &&
           !(column("probe4_s") > t.at("probe4_s")[k - 1]))
@@ -142,14 +144,13 @@ end
             << at_end("max_alpha") << ", alpha at the clamp " << alpha_clamp
             << ", mid " << at_end("probe2_alpha") << ", under the block "
             << at_end("probe3_alpha") << "; s at the clamp "
-            << at_end("probe4_s") << ", max s " << at_end("max_s")
-            << ", mid " << at_end("probe2_s") << "; W_p "
-            << at_end("plastic_work") << " J, crack energy "
-            << at_end("fracture_energy") << " J, friction "
-            << at_end("contact1_dissipation") << " J; worst force "
-            << worst_force << ", worst balance " << worst_balance
-            << ", min s change " << min_s_change << ", median rate "
-            << median_rate << " of " << rates.size() << ", exact tangent in "
-            << exact_tangent << " of " << n - 1 << " steps, area / block face "
-            << area_ratio << std::endl;
+            << at_end("probe4_s") << ", max s " << at_end("max_s") << ", mid "
+            << at_end("probe2_s") << "; W_p " << at_end("plastic_work")
+            << " J, crack energy " << at_end("fracture_energy")
+            << " J, friction " << at_end("contact1_dissipation")
+            << " J; worst force " << worst_force << ", worst balance "
+            << worst_balance << ", min s change " << min_s_change
+            << ", median rate " << median_rate << " of " << rates.size()
+            << ", exact tangent in " << exact_tangent << " of " << n - 1
+            << " steps, area / block face " << area_ratio << std::endl;
 }

@@ -1,13 +1,14 @@
 // Material-point check of the crack drivers (crack_driving_energy(),
 // issue #25 item 4), no mesh:
 //  1. the elastic driver is psi^+ of (27) with its derivatives;
-//  2. the elastic-plus-plastic-work driver psi_D = <psi^+ + W_p(alpha) -
-//     w_c>: its derivatives with respect to F, alpha and s equal
-//     fourth-order central differences of the whole chain (plastic_update
-//     then crack_driving_energy, the yield switch frozen as in Newton) to
-//     1e-7 in plastic and elastic states with damage and a prior plastic
-//     history, w_c chosen so that the bracket is open at some samples and
-//     closed at others; where it is closed psi_D and its derivatives are 0;
+//  2. the elastic-plus-plastic-work driver psi_D = zeta <psi^+ +
+//     W_p(alpha) - w_c> (zeta = 2.5): its derivatives with respect to F,
+//     alpha and s equal fourth-order central differences of the whole
+//     chain (plastic_update then crack_driving_energy, the yield switch
+//     frozen as in Newton) to 1e-7 in plastic and elastic states with
+//     damage and a prior plastic history, w_c chosen so that the bracket
+//     is open at some samples and closed at others; where it is closed
+//     psi_D and its derivatives are 0;
 //  3. W_p(alpha) = int_0^alpha yhat: its derivative is yhat (central
 //     differences) and W_p(0) = 0; in uniaxial rate-independent flow the
 //     work of the flow stress, int yhat d alpha, equals W_p (trapezoidal
@@ -35,9 +36,11 @@ main()
   std::uniform_real_distribution<double> d(-1., 1.);
   // psi^+ ~ 1e-3 and W_p(alpha ~ 0.01) ~ 5e-5 in these units: w_c in
   // between opens the bracket at some samples only.
-  const double w_c   = 4e-4;
-  double       worst = 0., elastic_error = 0., closed_value = 0.;
-  unsigned int open_samples = 0, closed_samples = 0, plastic = 0;
+  const double w_c = 4e-4;
+  // zeta != 1, so that a missing factor shows.
+  const PlasticWorkDriver work_driver{w_c, 2.5};
+  double                  worst = 0., elastic_error = 0., closed_value = 0.;
+  unsigned int            open_samples = 0, closed_samples = 0, plastic = 0;
   for (unsigned int sample = 0; sample < 60; ++sample)
     {
       PlasticHistory h;
@@ -63,8 +66,8 @@ main()
       plastic += m.yielding;
 
       // 1. The elastic driver.
-      const DrivingEnergy e =
-        crack_driving_energy(m, alpha, CrackDriverType::elastic, w_c, p);
+      const DrivingEnergy e = crack_driving_energy(
+        m, alpha, CrackDriverType::elastic, work_driver, p);
       elastic_error = std::max({elastic_error,
                                 std::abs(e.value - m.psi_plus),
                                 (e.d_dF - m.dpsi_plus_dF).norm(),
@@ -73,7 +76,7 @@ main()
 
       // 2. The plastic work driver against central differences.
       const DrivingEnergy D = crack_driving_energy(
-        m, alpha, CrackDriverType::elastic_plastic, w_c, p);
+        m, alpha, CrackDriverType::elastic_plastic, work_driver, p);
       const auto value_at = [&](const Tensor<2, dim> &dF,
                                 const double          dalpha,
                                 const double          ds,
@@ -89,7 +92,7 @@ main()
         return crack_driving_energy(r,
                                     alpha + t * dalpha,
                                     CrackDriverType::elastic_plastic,
-                                    w_c,
+                                    work_driver,
                                     p)
           .value;
       };

@@ -408,19 +408,21 @@ namespace DuctileContact
             // Only the cell averages: the crack driver, no rows.
             if (has_s)
               {
-                const CrackDriver d = crack_driver(
-                  crack_driving_energy(m,
-                                       scratch.alpha[q],
-                                       body.crack.driver,
-                                       body.crack.critical_work_density,
-                                       plastic),
-                  crack_history ? scratch.history_n[q]->driving_energy_max : 0.,
-                  scratch.s[q],
-                  degradation,
-                  nullptr,
-                  index,
-                  q,
-                  sums);
+                const CrackDriver d =
+                  crack_driver(crack_driving_energy(m,
+                                                    scratch.alpha[q],
+                                                    body.crack.driver,
+                                                    body.crack.work_driver,
+                                                    plastic),
+                               crack_history
+                                 ? scratch.history_n[q]->driving_energy_max
+                                 : 0.,
+                               scratch.s[q],
+                               degradation,
+                               nullptr,
+                               index,
+                               q,
+                               sums);
                 driver_sum += -d.g1 * d.psi_H * JxW;
               }
             continue;
@@ -444,25 +446,25 @@ namespace DuctileContact
                           rows,
                           sums);
         if (has_s)
-          driver_sum += phase_field_point(
-            m,
-            crack_driving_energy(m,
-                                 scratch.alpha[q],
-                                 body.crack.driver,
-                                 body.crack.critical_work_density,
-                                 plastic),
-            body,
-            degradation,
-            q,
-            history_new,
-            scratch,
-            dofs,
-            step.dt,
-            JxW,
-            targets,
-            index,
-            rows,
-            sums);
+          driver_sum +=
+            phase_field_point(m,
+                              crack_driving_energy(m,
+                                                   scratch.alpha[q],
+                                                   body.crack.driver,
+                                                   body.crack.work_driver,
+                                                   plastic),
+                              body,
+                              degradation,
+                              q,
+                              history_new,
+                              scratch,
+                              dofs,
+                              step.dt,
+                              JxW,
+                              targets,
+                              index,
+                              rows,
+                              sums);
         if (history_new && has_alpha)
           history_new[q].plastic = m.updated;
       }

@@ -138,16 +138,24 @@ namespace DuctileContact
                "The energy density psi_D whose history maximum drives the "
                "crack in (51), H = -g_k'(s) max psi_D: 'elastic' is psi^+ of "
                "model.md (27), the paper's driver; 'elastic plus plastic "
-               "work' is <psi^+ + W_p(alpha) - w_c> with W_p = int_0^alpha "
+               "work' is zeta <psi^+ + W_p(alpha) - w_c> with W_p = "
+               "int_0^alpha "
                "yhat the plastic work density (Miehe et al. 2015/2016; "
                "doc/model.md, crack drivers), for bodies with plasticity: "
                "metals whose yield-limited stresses keep psi^+ far below "
                "g_c/(2 l_f) tear only with it.");
     prm.add_parameter("Critical work density",
-                      crack.critical_work_density,
+                      crack.work_driver.critical_work_density,
                       "w_c of the elastic-plus-plastic crack driver "
                       "[J/m^3]: below it nothing drives the crack. Not read "
                       "with Crack driver = elastic.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Driver factor",
+                      crack.work_driver.factor,
+                      "zeta of the elastic-plus-plastic crack driver [-]: "
+                      "how strongly the work above w_c drives the crack "
+                      "(Miehe et al.'s zeta g_c/(l_f psi_c)); positive. Not "
+                      "read with Crack driver = elastic.",
                       Patterns::Double(0.));
     prm.leave_subsection();
     prm.leave_subsection();

@@ -21,7 +21,7 @@ namespace DuctileContact
   crack_driving_energy(const MaterialResponse     &m,
                        const double                alpha,
                        const CrackDriverType       driver,
-                       const double                critical_work_density,
+                       const PlasticWorkDriver    &work_driver,
                        const PlasticityParameters &plastic)
   {
     DrivingEnergy d;
@@ -33,14 +33,15 @@ namespace DuctileContact
         d.d_ds     = m.dpsi_plus_ds;
         return d;
       }
-    const double above =
-      m.psi_plus + plastic_work_density(alpha, plastic) - critical_work_density;
+    const double above = m.psi_plus + plastic_work_density(alpha, plastic) -
+                         work_driver.critical_work_density;
     if (above <= 0.)
       return d;
-    d.value    = above;
-    d.d_dF     = m.dpsi_plus_dF;
-    d.d_dalpha = m.dpsi_plus_dalpha + hardening_stress(alpha, plastic);
-    d.d_ds     = m.dpsi_plus_ds;
+    const double zeta = work_driver.factor;
+    d.value           = zeta * above;
+    d.d_dF            = zeta * m.dpsi_plus_dF;
+    d.d_dalpha = zeta * (m.dpsi_plus_dalpha + hardening_stress(alpha, plastic));
+    d.d_ds     = zeta * m.dpsi_plus_ds;
     return d;
   }
 } // namespace DuctileContact

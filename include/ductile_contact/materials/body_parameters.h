@@ -33,8 +33,8 @@ namespace DuctileContact
     double volumetric_switch_width = MaterialDefaults::volumetric_switch_width;
     /// The energy that drives the crack (crack_driving_energy()).
     CrackDriverType driver = CrackDriverType::elastic;
-    /// w_c of the elastic-plus-plastic driver [J/m^3].
-    double critical_work_density = 0.;
+    /// w_c and zeta of the elastic-plus-plastic driver.
+    PlasticWorkDriver work_driver;
   };
 
   /**

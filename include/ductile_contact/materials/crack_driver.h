@@ -14,7 +14,7 @@ namespace DuctileContact
   {
     /// psi^+ of model.md (27), the paper's driver.
     elastic,
-    /// <psi^+ + W_p(alpha) - w_c>, plastic work drives the crack too.
+    /// zeta <psi^+ + W_p(alpha) - w_c>, plastic work drives the crack too.
     elastic_plastic
   };
 
@@ -44,6 +44,15 @@ namespace DuctileContact
   double
   plastic_work_density(const double alpha, const PlasticityParameters &p);
 
+  /// The parameters of the plastic work driver.
+  struct PlasticWorkDriver
+  {
+    /// w_c: critical work density [J/m^3].
+    double critical_work_density = 0.;
+    /// zeta: driver factor [-].
+    double factor = 1.;
+  };
+
   /**
    * The energy density psi_D that drives the crack in (51), H =
    * -g_k'(s) max_t psi_D, a pure function of the material point's
@@ -54,11 +63,14 @@ namespace DuctileContact
    *    Aldakheel 2015, CMAME 294, and Miehe, Aldakheel & Raina 2016, IJP
    *    84: a crack driving state function of the elastic and the plastic
    *    energy above a critical work density):
-   *      psi_D = < psi^+ + W_p(alpha) - w_c >,   <x> = max(x, 0),
-   *    with W_p of plastic_work_density() and w_c = Critical work density.
-   *    Below w_c nothing drives the crack; a metal that has dissipated
-   *    W_p ~ g_c/(2 l_f) per unit volume tears, whatever its elastic
-   *    energy (which yield-limited stresses keep small).
+   *      psi_D = zeta < psi^+ + W_p(alpha) - w_c >,   <x> = max(x, 0),
+   *    with W_p of plastic_work_density(), w_c = Critical work density and
+   *    zeta = Driver factor (Miehe's zeta g_c/(l_f psi_c) in our units:
+   *    it sets how fast the crack grows once the work exceeds w_c,
+   *    independently of the crack energy g_c). Below w_c nothing drives
+   *    the crack; a metal that has dissipated zeta W_p ~ g_c/(2 l_f) per
+   *    unit volume tears, whatever its elastic energy (which yield-limited
+   *    stresses keep small).
    *
    * The derivatives are exact (those of psi^+ come from the material law's
    * automatic differentiation; dW_p/dalpha = yhat(alpha)); where the
@@ -70,6 +82,6 @@ namespace DuctileContact
   crack_driving_energy(const MaterialResponse     &m,
                        const double                alpha,
                        const CrackDriverType       driver,
-                       const double                critical_work_density,
+                       const PlasticWorkDriver    &work_driver,
                        const PlasticityParameters &plastic);
 } // namespace DuctileContact
