@@ -50,10 +50,13 @@ def load(variant):
     if not os.path.isfile(stats):
         return None
     rows = read_statistics(stats)
+    if len(rows) < 2:
+        return None
     screen_path = os.path.join(run, "screen.txt")
     screen = open(screen_path).read() if os.path.isfile(screen_path) else ""
     return dict(rows=rows, screen=screen, wall=wall_time(screen_path)
                 if screen else None,
+                stopped=os.path.isfile(os.path.join(run, "NOTE")),
                 ranks=find(r"on (\d+) MPI rank", screen, "?"),
                 unknowns=find(r"DoFs: (\d+)", screen, "-"))
 
@@ -93,7 +96,9 @@ def summary(variant, run, reference):
         variant, run["unknowns"], f"{len(rows) - 1}",
         f"{last['u2_z'] * -1e3:.2f}",
         f"{iterations:.0f}",
-        f"{wall:.0f} s on {run['ranks']}" if wall else "running",
+        f"{wall:.0f} s on {run['ranks']}" if wall else
+        f"{last['wall_time']:.0f} s on {run['ranks']}, "
+        + ("stopped by hand" if run["stopped"] else "running"),
         f"{assembly:.0f} / {contact:.0f} / {solve:.0f}",
         f"{abs(last['F2_z']) / 1e3:.3f}",
         f"{max(abs(r['F2_z']) for r in rows) / 1e3:.3f}",

@@ -35,7 +35,8 @@ def parameter(prm, name):
 def evaluate(directory):
     name = os.path.basename(directory)
     h = float(re.match(r"h([\d.]+)-", name).group(1)) * 1e-3
-    delta = float(re.search(r"delta(\S+)$", name).group(1))
+    delta = float(re.search(r"delta([\d.e+-]+?)(-work)?$", name).group(1))
+    driver = "plastic work" if name.endswith("-work") else "elastic"
     prm = open(os.path.join(directory, "scene.prm")).read()
     g_c = parameter(prm, "Critical energy release rate")
     rows = read_statistics(os.path.join(directory, "statistics"))
@@ -49,7 +50,7 @@ def evaluate(directory):
     w_ext = np.array([r["external_work"] for r in rows])
     res = np.array([r["energy_residual"] for r in rows])
     worst_res = max(abs(r) / w for r, w in zip(res[1:], w_ext[1:]))
-    return dict(name=name, h=h, delta=delta, dofs=dofs, u=u, F=F, peak=F[k], u_peak=u[k],
+    return dict(name=name, h=h, delta=delta, driver=driver, dofs=dofs, u=u, F=F, peak=F[k], u_peak=u[k],
                 u_half=u_half, alpha_peak=rows[k]["max_alpha"],
                 wp_share=rows[k]["plastic_work"] / rows[k]["external_work"],
                 crack=rows[-1]["fracture_energy"] / (g_c * LIGAMENT * h),
@@ -62,8 +63,8 @@ def evaluate(directory):
 def main():
     runs = [evaluate(d) for d in sorted(glob.glob(os.path.join(here, "runs", "*")))
             if os.path.exists(os.path.join(d, "statistics"))]
-    runs.sort(key=lambda r: (-r["h"], r["delta"]))
-    with_ref = [r for r in runs if r["delta"] == 1e-3]
+    runs.sort(key=lambda r: (r["driver"], -r["h"], r["delta"]))
+    with_ref = [r for r in runs if r["delta"] == 1e-3 and r["driver"] == "elastic"]
     ref = min(with_ref, key=lambda r: r["h"]) if with_ref else None
 
     lines = ["# Ductile notched plate: force, crack and plastic work against run time", "",
@@ -72,10 +73,10 @@ def main():
              "top displacement where the force has fallen to half its peak; crack energy / g_c A with",
              "A = ligament x thickness; residual: largest |energy residual| / W_ext over the run.",
              "Errors against the finest run with delta = 1e-3 (ref).", "",
-             "| h [mm] | delta | unknowns | end u [um] | peak F [kN/mm] | u at peak [um] | u_half [um] "
+             "| crack driver | h [mm] | delta | unknowns | end u [um] | peak F [kN/mm] | u at peak [um] | u_half [um] "
              "| max alpha at peak | W_p / W_ext at peak | crack energy / g_c A | residual | steps "
              "| Newton its | cut-backs | run time [s] | peak err | u_half err |",
-             "|" + "---|" * 17]
+             "|" + "---|" * 18]
     for r in runs:
         t = "%.0f" % r["time"] if r["time"] else "stopped"
         if r is ref:
@@ -85,9 +86,9 @@ def main():
                                           100 * (r["u_half"] / ref["u_half"] - 1))
         else:
             errs = " | "
-        lines.append("| %.3g | %.0e | %d | %.1f | %.4f | %.2f | %.2f | %.4f | %.2f | %.2f | %.1e "
+        lines.append("| %s | %.3g | %.0e | %d | %.1f | %.4f | %.2f | %.2f | %.4f | %.2f | %.2f | %.1e "
                      "| %d | %d | %d | %s | %s |" % (
-                         r["h"] * 1e3, r["delta"], r["dofs"], r["end_u"] * 1e6, r["peak"] / 1e6,
+                         r["driver"], r["h"] * 1e3, r["delta"], r["dofs"], r["end_u"] * 1e6, r["peak"] / 1e6,
                          r["u_peak"] * 1e6, r["u_half"] * 1e6, r["alpha_peak"], r["wp_share"],
                          r["crack"], r["worst_res"], r["steps"], r["newton"], r["cutbacks"], t,
                          errs))
@@ -100,7 +101,10 @@ def main():
 
     fig, ax = plt.subplots(figsize=(6.5, 4.5))
     for r in runs:
-        ax.plot(r["u"] * 1e6, r["F"] / 1e6, label="h = %.3g mm, delta = %.0e" % (r["h"] * 1e3, r["delta"]))
+        ax.plot(r["u"] * 1e6, r["F"] / 1e6,
+                label="h = %.3g mm, delta = %.0e%s" % (
+                    r["h"] * 1e3, r["delta"],
+                    ", plastic work driver" if r["driver"] != "elastic" else ""))
     ax.set_xlabel("top displacement u [um]")
     ax.set_ylabel("force per unit thickness [kN/mm]")
     ax.set_title("ductile notched plate (prm/ductile_notch.prm)", fontsize=9)

@@ -7,23 +7,25 @@
 # where the crack has crossed the ligament, plastic work and crack energy
 # against run time; pictures of s and alpha.
 # Usage: benchmarks/plasticity/ductile_notch/run.sh [NP] [CASE ...]
-#   CASE = <h [mm]>:<delta>, default 0.05:1e-3 0.05:5e-4 0.05:2e-3
-#   0.035:1e-3 (about 10, 10, 10 and 25 min on 2 ranks). Cases with a
-#   finished run are skipped.
+#   CASE = <h [mm]>:<delta>[:work], default 0.05:1e-3 0.05:5e-4 0.05:2e-3
+#   0.035:1e-3 0.05:1e-3:work (about 10, 10, 10, 25 and 10 min on 2
+#   ranks); ':work' runs with the plastic work crack driver (Fracture/Crack
+#   driver = elastic plus plastic work, w_c = 0, zeta = 1; doc/model.md
+#   4.3). Cases with a finished run are skipped.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 np=${1:-2}
 shift || true
 cases=("$@")
-((${#cases[@]})) || cases=(0.05:1e-3 0.05:5e-4 0.05:2e-3 0.035:1e-3)
+((${#cases[@]})) || cases=(0.05:1e-3 0.05:5e-4 0.05:2e-3 0.035:1e-3 0.05:1e-3:work)
 require_build
 scene="$project_root/prm/ductile_notch.prm"
 height=$(sed -n 's/^# Specimen height: \([0-9.]*\) mm.*/\1/p' "$scene")
 
 for case in "${cases[@]}"; do
-  IFS=: read -r h delta <<< "$case"
-  name="h$h-delta$delta"
+  IFS=: read -r h delta driver <<< "$case"
+  name="h$h-delta$delta${driver:+-$driver}"
   dir="$here/runs/$name"
   if run_finished "$dir"; then
     echo "== $name (done)"
@@ -36,6 +38,12 @@ for case in "${cases[@]}"; do
     -e "s|set Directory = .*|set Directory = $dir|" \
     -e "s|set Interval  = .*|set Interval = 10|" \
     "$scene" > "$dir/scene.prm"
+  if [[ $driver == work ]]; then
+    printf '%s\n' "subsection Body 1" "subsection Fracture" \
+      "set Crack driver = elastic plus plastic work" \
+      "set Critical work density = 0" "set Driver factor = 1" "end" "end" \
+      >> "$dir/scene.prm"
+  fi
   echo "== $name"
   run_scene "$np" "$dir"
   grep -E "^step" "$dir/screen.txt" | tail -1 || true
