@@ -26,10 +26,11 @@ if [[ -z "${1:-}" ]]; then
     --out "$results/force_displacement.png" \
     --title "block on plate: force on the block's top face"
 fi
-# The fields the scene has (s, alpha), else the von Mises stress.
+# The fields the scene has (s, alpha: its statistics report max_s,
+# max_alpha), else the von Mises stress.
 fields=()
 for f in s alpha; do
-  grep -q "Name=\"$f\"" "$results"/solution_*.pvtu 2>/dev/null && fields+=("$f")
+  head -1 "$results/statistics" | grep -qw "max_$f" && fields+=("$f")
 done
 ((${#fields[@]})) || fields=(von_mises_kirchhoff)
 xvfb-run -a "$plots/render_fields.py" "$results" "${fields[@]}"
