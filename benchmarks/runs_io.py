@@ -1,5 +1,6 @@
-"""Readers shared by the benchmark reports: a run's `statistics` table and
-the wall time its screen output ends with."""
+"""Readers shared by the benchmark reports: a run's `statistics` table, the
+wall time its screen output ends with, and the sections of its timer
+table."""
 import re
 
 
@@ -16,3 +17,17 @@ def wall_time(screen_path):
     m = re.search(r"Total wallclock time elapsed since start\s*\|\s*([\d.e+-]+)s",
                   open(screen_path).read())
     return float(m.group(1)) if m else None
+
+
+def find(pattern, text, default=None):
+    """The first group of @p pattern in @p text, or @p default."""
+    m = re.search(pattern, text)
+    return m.group(1) if m else default
+
+
+def timer_section(screen, name):
+    """Wall time [s] of the timer section @p name of a run's screen output
+    (0 if absent)."""
+    value = find(r"\| " + re.escape(name) + r"\s*\|\s*\d+\s*\|\s*([\d.e+-]+)s",
+                 screen)
+    return float(value) if value else 0.

@@ -98,12 +98,8 @@ main()
       };
       const auto derivative =
         [&](const Tensor<2, dim> &dF, const double dalpha, const double ds) {
-          const double hd = 1e-5;
-          const auto   at = [&](const double t) {
-            return value_at(dF, dalpha, ds, t);
-          };
-          return (8. * (at(hd) - at(-hd)) - (at(2. * hd) - at(-2. * hd))) /
-                 (12. * hd);
+          return Testing::derivative_4th_order(
+            [&](const double t) { return value_at(dF, dalpha, ds, t); }, 1e-5);
         };
       if (D.value > 1e-4 * w_c)
         {

@@ -162,9 +162,7 @@ main()
                                     r.yielding)
                 .psi_plus;
             };
-            const double hd = 1e-5;
-            return (8. * (at(hd) - at(-hd)) - (at(2. * hd) - at(-2. * hd))) /
-                   (12. * hd);
+            return Testing::derivative_4th_order(at, 1e-5);
           };
           for (unsigned int c = 0; c < dim; ++c)
             for (unsigned int D = 0; D < dim; ++D)

@@ -471,6 +471,14 @@ end
     return std::abs(value - reference) / std::max(std::abs(reference), scale);
   }
 
+  /// f'(0) by fourth-order central differences from f(+-h), f(+-2h).
+  template <typename Function>
+  double
+  derivative_4th_order(const Function &f, const double h)
+  {
+    return (8. * (f(h) - f(-h)) - (f(2. * h) - f(-2. * h))) / (12. * h);
+  }
+
   /// "yes"/"no" for a condition: what the output file records.
   inline const char *
   yes_no(const bool condition)

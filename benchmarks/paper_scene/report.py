@@ -17,7 +17,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, ".."))
-from runs_io import read_statistics, wall_time  # noqa: E402
+from runs_io import find, read_statistics, timer_section, wall_time  # noqa: E402,E501
 
 names = {
     "paper": "the paper's model (elastic crack driver), eta_p = 1e6, "
@@ -31,17 +31,6 @@ names = {
     "ductile_zeta30": "plastic work driver, w_c = 5e5 J/m^3, zeta = 30",
 }
 order = list(names)
-
-
-def find(pattern, text, default=None):
-    m = re.search(pattern, text)
-    return m.group(1) if m else default
-
-
-def section(screen, name):
-    value = find(r"\| " + re.escape(name) + r"\s*\|\s*\d+\s*\|\s*([\d.e+-]+)s",
-                 screen)
-    return float(value) if value else 0.
 
 
 def load(variant):
@@ -83,11 +72,11 @@ def summary(variant, run, reference):
     last = rows[-1]
     iterations = sum(r["newton_iterations"] for r in rows)
     screen = run["screen"]
-    assembly = section(screen, "assembly") + section(
-        screen, "assembly (line search)") + section(screen, "commit history")
-    contact = section(screen, "contact: integration, residual") + section(
+    assembly = timer_section(screen, "assembly") + timer_section(
+        screen, "assembly (line search)") + timer_section(screen, "commit history")
+    contact = timer_section(screen, "contact: integration, residual") + timer_section(
         screen, "contact: integration, tangent")
-    solve = section(screen, "linear solve")
+    solve = timer_section(screen, "linear solve")
     balance = max(abs(r["energy_residual"] + r["history_driving_work"])
                   for r in rows[1:]) / last["external_work"]
     change = curve_change(rows, reference["rows"]) if reference else None

@@ -10,7 +10,7 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, ".."))
-from runs_io import read_statistics, wall_time  # noqa: E402
+from runs_io import find, read_statistics, timer_section, wall_time  # noqa: E402,E501
 
 
 def last(column):
@@ -58,18 +58,6 @@ names = {"default": "current defaults",
          "al": "augmented Lagrangian (before)"}
 
 
-def find(pattern, text, default=None):
-    m = re.search(pattern, text)
-    return m.group(1) if m else default
-
-
-def section(screen, name):
-    """Wall time [s] of timer section @p name (0 if absent)."""
-    value = find(r"\| " + re.escape(name) + r"\s*\|\s*\d+\s*\|\s*([\d.e+-]+)s",
-                 screen)
-    return float(value) if value else 0.
-
-
 def row(scene, variant, run):
     screen_path = os.path.join(run, "screen.txt")
     screen = open(screen_path).read()
@@ -84,11 +72,11 @@ def row(scene, variant, run):
     rows = read_statistics(stats)
     its = sum(r["newton_iterations"] for r in rows)
     lin = sum(r["linear_iterations"] for r in rows)
-    contact = (section(screen, "contact: integration, tangent") +
-               section(screen, "contact: integration, residual"))
-    assembly = (section(screen, "assembly") +
-                section(screen, "assembly (line search)") - contact)
-    solve = section(screen, "linear solve")
+    contact = (timer_section(screen, "contact: integration, tangent") +
+               timer_section(screen, "contact: integration, residual"))
+    assembly = (timer_section(screen, "assembly") +
+                timer_section(screen, "assembly (line search)") - contact)
+    solve = timer_section(screen, "linear solve")
     rest = wall - assembly - contact - solve
     per = lambda x: 1e3 * x / its  # noqa: E731
     name, f, reference, tolerance, _ = quantities[scene]
