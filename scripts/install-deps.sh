@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(cmake make g++ libdeal.ii-dev libmumps-dev libmetis-dev openmpi-bin numdiff
-          libopenblas0-pthread)
+          libopenblas0-pthread python3)
 if [[ "${1:-}" == "--plots" ]]; then
   packages+=(python3-matplotlib time python3-vtk9 xvfb xauth)
 fi

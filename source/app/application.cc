@@ -21,12 +21,15 @@ namespace DuctileContact
   namespace
   {
     const char *usage =
-      "Usage: ductile-contact [--validate] [--print-parameters] FILE.prm\n"
+      "Usage: ductile-contact [--validate] [--print-parameters[=FORMAT]] "
+      "FILE.prm\n"
       "       mpirun -np N ductile-contact FILE.prm\n"
       "  --validate          parse and check FILE.prm (and its scene), then "
       "exit: 0 if valid\n"
-      "  --print-parameters  print every entry with its default, pattern and "
-      "documentation (the values of FILE.prm if given) and exit\n";
+      "  --print-parameters  print every entry with its documentation and "
+      "its default (the values of FILE.prm if given) as a .prm file and "
+      "exit; FORMAT = prm (default), description (with the allowed values) "
+      "or json (for scripts: value, default, pattern, documentation)\n";
 
     /// deal.II's multi-line parser messages as one line, with the line
     /// number of the input file ("line 13: ...").
@@ -132,13 +135,34 @@ namespace DuctileContact
     const bool  root     = Utilities::MPI::this_mpi_process(comm) == 0;
     bool        validate = false, print_parameters = false;
     std::string file_name;
+    ParameterHandler::OutputStyle style = ParameterHandler::PRM;
     for (int i = 1; i < argc; ++i)
       {
         const std::string arg = argv[i];
         if (arg == "--validate")
           validate = true;
-        else if (arg == "--print-parameters")
-          print_parameters = true;
+        else if (arg.rfind("--print-parameters", 0) == 0)
+          {
+            print_parameters         = true;
+            const std::string format = arg.size() > 18 && arg[18] == '='
+                                         ? arg.substr(19)
+                                         : std::string("prm");
+            if (format == "prm")
+              style = ParameterHandler::PRM;
+            else if (format == "description")
+              style = ParameterHandler::Description;
+            else if (format == "json")
+              style = ParameterHandler::JSON;
+            else
+              {
+                if (root)
+                  std::cerr << "Error: unknown format '" << format
+                            << "' of --print-parameters (prm, description or "
+                               "json)\n"
+                            << usage;
+                return 1;
+              }
+          }
         else if (arg == "-h" || arg == "--help")
           {
             if (root)
@@ -204,9 +228,7 @@ namespace DuctileContact
       {
         if (root)
           parameters.prm.print_parameters(
-            std::cout,
-            ParameterHandler::Description |
-              ParameterHandler::KeepDeclarationOrder);
+            std::cout, style | ParameterHandler::KeepDeclarationOrder);
         return 0;
       }
     if (validate)

@@ -106,7 +106,8 @@ namespace DuctileContact
     prm.add_parameter("Degradation parameter",
                       crack.degradation_a,
                       "a_g of g(s) (model.md section 2); 2 gives "
-                      "g(s) = (1 - s)^2. Between 0 and 3 (g must decrease).",
+                      "g(s) = (1 - s)^2. Between 0 and 3 (g must decrease) "
+                      "[-].",
                       Patterns::Double(0.));
     prm.add_parameter("Residual stiffness",
                       crack.residual_stiffness,
@@ -116,7 +117,7 @@ namespace DuctileContact
                       crack.interior_penalty,
                       "gamma_IP of the C0 interior-penalty face terms of the "
                       "bi-Laplacian; 0 selects the default 1.5 p (p + 1) "
-                      "(see phase_field/c0ip.h for why not p (p + 1)).",
+                      "(see phase_field/c0ip.h for why not p (p + 1)) [-].",
                       Patterns::Double(0.));
     prm.add_parameter(
       "Volumetric switch width",

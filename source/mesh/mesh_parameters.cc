@@ -99,7 +99,7 @@ namespace DuctileContact
                       round_bar.imperfection,
                       "Relative reduction of the radius at mid-length "
                       "(linear taper from the ends), e.g. 0.018 for "
-                      "0.982 R.",
+                      "0.982 R [-].",
                       Patterns::Double(0., 0.5));
     prm.add_parameter("Axial subdivisions",
                       round_bar.axial_subdivisions,

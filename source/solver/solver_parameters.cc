@@ -18,17 +18,18 @@ namespace DuctileContact
                       Patterns::Double(0.));
     prm.add_parameter("Time step",
                       time_step,
-                      "Nominal (and largest) load-step increment of t.",
+                      "Nominal (and largest) load-step increment of t "
+                      "[-].",
                       Patterns::Double(0.));
     prm.add_parameter("Minimum time step",
                       minimum_time_step,
                       "The run gives up when a failing step would need a "
-                      "smaller increment than this.",
+                      "smaller increment than this [-].",
                       Patterns::Double(0.));
     prm.add_parameter("Growth factor",
                       growth_factor,
                       "After an easy step (see below), the increment grows by "
-                      "this factor, up to the nominal time step.",
+                      "this factor, up to the nominal time step [-].",
                       Patterns::Double(1.));
     prm.add_parameter("Easy step Newton iterations",
                       easy_newton_steps,
@@ -96,7 +97,8 @@ namespace DuctileContact
       "Relative tolerance",
       relative_tolerance,
       "Converged when the residual norm on free DoFs is below this times "
-      "the norm of the internal force vector (which includes reactions).",
+      "the norm of the internal force vector (which includes reactions) "
+      "[-].",
       Patterns::Double(0., 1.));
     prm.add_parameter(
       "Absolute tolerance",
@@ -205,7 +207,7 @@ namespace DuctileContact
     prm.add_parameter("Relative tolerance",
                       relative_tolerance,
                       "Iterative solvers stop when the residual is below "
-                      "this times the right-hand side norm.",
+                      "this times the right-hand side norm [-].",
                       Patterns::Double(0., 1.));
     prm.add_parameter("Maximum iterations",
                       max_iterations,
@@ -216,7 +218,7 @@ namespace DuctileContact
                       "ML aggregation threshold of the AMG on u and alpha "
                       "(1e-4 is best measured for Q2 elasticity, see docs); "
                       "the AMG on s uses 0.02, best measured for its C0IP "
-                      "block.",
+                      "block [-].",
                       Patterns::Double(0., 1.));
     prm.add_parameter("AMG smoother sweeps",
                       smoother_sweeps,
