@@ -1,6 +1,7 @@
 #include <deal.II/differentiation/ad.h>
 
 #include <ductile_contact/core/ad_value.h>
+#include <ductile_contact/core/sacado_sfad.h>
 #include <ductile_contact/materials/degradation.h>
 #include <ductile_contact/materials/plasticity.h>
 
@@ -12,8 +13,9 @@ namespace DuctileContact
 
   namespace
   {
-    // deal.II's tensors accept Sacado's DFad (not SFad) as a scalar type.
-    using ADNumber = Sacado::Fad::DFad<double>;
+    // Derivatives with respect to F (9), alpha and s on the stack
+    // (core/sacado_sfad.h makes deal.II's tensors accept SFad).
+    using ADNumber = Sacado::Fad::SFad<double, 11>;
 
     /// eps / y_0 of the flow direction at points that do not yield (see
     /// plastic_update()).

@@ -13,8 +13,8 @@ namespace DuctileContact
    * linearisation: derivatives with respect to the 54 current coordinates
    * of one slave/master quad9 face pair, direction 3 i + c for slave node i
    * and 27 + 3 i + c for master node i (component c). A fixed size keeps
-   * the numbers on the stack (deal.II's tensors take only DFad, so the
-   * contact geometry works on plain arrays).
+   * the numbers on the stack (the contact geometry works on plain arrays;
+   * core/sacado_sfad.h would let deal.II's tensors take it).
    */
   using ContactAD = Sacado::Fad::SFad<double, 54>;
 } // namespace DuctileContact

@@ -105,7 +105,7 @@ namespace DuctileContact
    * min_alpha_change_yielding).
    *
    * The tangents with respect to F, alpha and s are exact: forward-mode
-   * automatic differentiation (Sacado DFad with 11 directions) of the same
+   * automatic differentiation (Sacado SFad with 11 directions) of the same
    * code (the yield switch chi_p is fixed at its value, as in Newton's
    * method). @p frozen_yielding, if given, replaces the trial-state test
    * for chi_p (the Newton line search keeps the switch of the iterate it
