@@ -75,7 +75,7 @@ namespace DuctileContact
    *
    * Our choices where (50) and section 3 leave the discretisation open
    * (found on the necking bar, whose Newton iteration cycled or stalled at
-   * the onset of the neck otherwise; README "Plasticity"):
+   * the onset of the neck otherwise; doc/model.md section 3.1):
    *  - the flow formula is applied at every point with the alpha it is
    *    given, not only where chi_p = 1, and lambda_p is not clamped at
    *    alpha < alpha_n: tau is a smooth function of (F, alpha);
