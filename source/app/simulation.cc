@@ -122,6 +122,7 @@ namespace DuctileContact
     solver = std::make_unique<CoupledSolver>(
       parameters.coupling, *problem, *newton, verbose_out, contact.get());
     writer = std::make_unique<SolutionWriter>(parameters.output.directory,
+                                              parameters.output.format,
                                               *discretisation,
                                               bodies);
 

@@ -12,10 +12,21 @@ namespace DuctileContact
     prm.add_parameter(
       "Directory",
       directory,
-      "Folder for results: solution-NNNNN.pvtu, solution.pvd, statistics, "
+      "Folder for results: the field output (see Format), statistics, "
       "log.txt, input.prm (copy of the input) and parameters.prm (every "
       "entry as used). Created if missing.",
       Patterns::Anything());
+    add_option(
+      prm,
+      "Format",
+      format,
+      output_format_names(),
+      "Format of the field output. 'vtu': solution_NNNNN.pvtu with one .vtu "
+      "per rank and step, and the series solution.pvd. 'hdf5': one "
+      "solution_NNNNN.h5 per step written by all ranks together (parallel "
+      "HDF5), the mesh once in mesh.h5, and the series solution.xdmf that "
+      "ParaView and VisIt open; for large runs. Both keep the nodes of "
+      "different bodies apart where they touch.");
     prm.add_parameter("Interval",
                       interval,
                       "Write graphical output every this many accepted load "

@@ -14,9 +14,11 @@ namespace DuctileContact
 
   SolutionWriter::SolutionWriter(
     const std::string                                          &directory,
+    const OutputFormat                                          format,
     const Discretisation                                       &discretisation,
     const std::map<types::material_id, const BodyParameters *> &bodies)
       : directory(directory)
+      , format(format)
       , discretisation(discretisation)
       , bodies(bodies)
   {
@@ -87,14 +89,47 @@ namespace DuctileContact
     data_out.add_data_vector(rank, "mpi_rank");
     data_out.build_patches(discretisation.degree);
 
-    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-      directory + "/", "solution", step, tria.get_communicator(), 5);
-
-    records.emplace_back(time, pvtu);
-    if (Utilities::MPI::this_mpi_process(tria.get_communicator()) == 0)
+    const MPI_Comm comm = tria.get_communicator();
+    if (format == OutputFormat::vtu)
       {
-        std::ofstream pvd(directory + "/solution.pvd");
-        DataOutBase::write_pvd_record(pvd, records);
+        const std::string pvtu = data_out.write_vtu_with_pvtu_record(
+          directory + "/", "solution", step, comm, 5);
+        records.emplace_back(time, pvtu);
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          {
+            std::ofstream pvd(directory + "/solution.pvd");
+            DataOutBase::write_pvd_record(pvd, records);
+          }
+        return;
       }
+
+    // hdf5: no merging of nodes with equal coordinates (bodies in contact
+    // would be glued), the mesh only when it is new; names in the .xdmf
+    // are relative to it.
+    DataOutBase::DataOutFilter filter(
+      DataOutBase::DataOutFilterFlags(/*filter_duplicate_vertices=*/false,
+                                      /*xdmf_hdf5_output=*/true));
+    data_out.write_filtered_data(filter);
+    const bool        new_mesh = mesh_file.empty();
+    const std::string solution_file =
+      "solution_" + Utilities::int_to_string(step, 5) + ".h5";
+    if (new_mesh)
+      mesh_file = "mesh_" + Utilities::int_to_string(step, 5) + ".h5";
+    data_out.write_hdf5_parallel(filter,
+                                 new_mesh,
+                                 directory + "/" + mesh_file,
+                                 directory + "/" + solution_file,
+                                 comm);
+    xdmf_entries.push_back(
+      data_out.create_xdmf_entry(filter, mesh_file, solution_file, time, comm));
+    data_out.write_xdmf_file(xdmf_entries, directory + "/solution.xdmf", comm);
+  }
+
+
+
+  void
+  SolutionWriter::mesh_changed()
+  {
+    mesh_file.clear();
   }
 } // namespace DuctileContact

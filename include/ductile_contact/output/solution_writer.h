@@ -1,10 +1,12 @@
 #pragma once
 
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <ductile_contact/assembly/assembly_data.h>
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/materials/body_parameters.h>
+#include <ductile_contact/output/output_parameters.h>
 
 #include <map>
 #include <string>
@@ -14,9 +16,15 @@
 namespace DuctileContact
 {
   /**
-   * Graphical output: results/solution-NNNNN.pvtu (one .vtu per rank) and
-   * the time series results/solution.pvd. Point data: displacement (for
-   * Warp By Vector), alpha, s. Cell data (averages over the quadrature
+   * Graphical output, Output/Format = vtu: solution_NNNNN.pvtu (one .vtu
+   * per rank) and the time series solution.pvd; hdf5: solution_NNNNN.h5
+   * (parallel HDF5, all ranks into one file), the mesh in mesh_NNNNN.h5
+   * of the first step on it (written again only when the mesh changes:
+   * mesh_changed()), the time series
+   * solution.xdmf. Nodes are never merged: DataOut writes each cell's
+   * nodes, and the HDF5 filter is told not to join nodes of equal
+   * coordinates, which would glue bodies in contact. Point data: displacement
+   * (for Warp By Vector), alpha, s. Cell data (averages over the quadrature
    * points, from SystemAssembler's CellQuantities): von Mises equivalent and
    * mean of the Kirchhoff stress [Pa], J, the crack driving force H =
    * -g'(s) psi^+_H [Pa], body (material id) and MPI rank.
@@ -25,6 +33,7 @@ namespace DuctileContact
   {
   public:
     SolutionWriter(const std::string                      &directory,
+                   const OutputFormat                      format,
                    const Discretisation                   &discretisation,
                    const std::map<dealii::types::material_id,
                                   const BodyParameters *> &bodies);
@@ -36,10 +45,18 @@ namespace DuctileContact
           const dealii::TrilinosWrappers::MPI::BlockVector &u,
           const CellQuantities                             &cells);
 
+    /// The mesh has changed since the last output: hdf5 writes it again.
+    void
+    mesh_changed();
+
   private:
     const std::string     directory;
+    const OutputFormat    format;
     const Discretisation &discretisation;
     const std::map<dealii::types::material_id, const BodyParameters *> bodies;
     std::vector<std::pair<double, std::string>>                        records;
+    std::vector<dealii::XDMFEntry> xdmf_entries;
+    /// The mesh file of the hdf5 output ("" until written).
+    std::string mesh_file;
   };
 } // namespace DuctileContact
