@@ -40,7 +40,8 @@ namespace DuctileContact
       "Irreversibility",
       irreversibility,
       irreversibility_names(),
-      "How the crack is kept from healing (model.md section 2). history: the "
+      "How the crack is kept from healing (doc/model.md section 2). history: "
+      "the "
       "crack driver uses the largest psi^+ a point has had (Miehe's history "
       "field); this keeps the driving force from falling but does not by "
       "itself keep s from falling (the gradient and bi-Laplacian terms of "

@@ -37,27 +37,29 @@ namespace DuctileContact
                       name,
                       "A name for the body, used on screen and in output.",
                       Patterns::Anything());
-    prm.add_parameter("Shear modulus",
-                      shear_modulus,
-                      "Shear modulus mu of the neo-Hooke law, model.md (16) "
-                      "[Pa].",
-                      Patterns::Double(0.));
-    prm.add_parameter("Bulk modulus",
-                      bulk_modulus,
-                      "Bulk modulus kappa of the neo-Hooke law, model.md (16) "
-                      "[Pa].",
-                      Patterns::Double(0.));
+    prm.add_parameter(
+      "Shear modulus",
+      shear_modulus,
+      "Shear modulus mu of the neo-Hooke law, doc/model.md (16) "
+      "[Pa].",
+      Patterns::Double(0.));
+    prm.add_parameter(
+      "Bulk modulus",
+      bulk_modulus,
+      "Bulk modulus kappa of the neo-Hooke law, doc/model.md (16) "
+      "[Pa].",
+      Patterns::Double(0.));
     prm.add_parameter(
       "Plasticity",
       plasticity,
       "Whether this body yields: it then carries the hardening field alpha "
-      "and the visco-plastic J2 model of model.md section 3 (parameters in "
+      "and the visco-plastic J2 model of doc/model.md section 3 (parameters in "
       "the subsection Plasticity). Without it alpha does not exist here.");
     prm.add_parameter(
       "Fracture",
       fracture,
       "Whether this body can crack: it then carries the phase field s of "
-      "model.md section 4 (parameters in the subsection Fracture). Without "
+      "doc/model.md section 4 (parameters in the subsection Fracture). Without "
       "it s does not exist here.");
 
     prm.enter_subsection("Plasticity");
@@ -105,7 +107,7 @@ namespace DuctileContact
                       Patterns::Double(0.));
     prm.add_parameter("Degradation parameter",
                       crack.degradation_a,
-                      "a_g of g(s) (model.md section 2); 2 gives "
+                      "a_g of g(s) (doc/model.md section 2); 2 gives "
                       "g(s) = (1 - s)^2. Between 0 and 3 (g must decrease) "
                       "[-].",
                       Patterns::Double(0.));
@@ -130,7 +132,7 @@ namespace DuctileContact
       "the tangent has no jump at J = 1 (Newton's line search fails at the "
       "jumps once many damaged points sit near J = 1, e.g. in the ductile "
       "notch). Bodies with plasticity only; 0 is the sharp switch of "
-      "model.md.",
+      "doc/model.md.",
       Patterns::Double(0., 0.1));
     add_option(prm,
                "Crack driver",
@@ -138,7 +140,7 @@ namespace DuctileContact
                crack_driver_names(),
                "The energy density psi_D whose history maximum drives the "
                "crack in (51), H = -g_k'(s) max psi_D: 'elastic' is psi^+ of "
-               "model.md (27), the paper's driver; 'elastic plus plastic "
+               "doc/model.md (27), the paper's driver; 'elastic plus plastic "
                "work' is zeta <psi^+ + W_p(alpha) - w_c> with W_p = "
                "int_0^alpha "
                "yhat the plastic work density (Miehe et al. 2015/2016; "

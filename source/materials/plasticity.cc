@@ -44,7 +44,7 @@ namespace DuctileContact
      * Tension part q(t) of the volumetric energy, t = J - 1, and q'(t):
      * psi_vol^+ = kappa/2 q(t), psi_vol^- = kappa/2 (t^2 - q(t)), so that
      * g psi_vol^+ + psi_vol^- = kappa/2 (t^2 - (1 - g) q(t)). Sharp (delta
-     * = 0): q = t^2 for t > 0, else 0 (model.md (17)). Blended: q'' = 2 w
+     * = 0): q = t^2 for t > 0, else 0 (doc/model.md (17)). Blended: q'' = 2 w
      * with the C2 step w(x) = 6x^5 - 15x^4 + 10x^3, x = (t + delta)/(2
      * delta) in [0, 1]; integrated twice from q(-delta) = q'(-delta) = 0:
      *   q  = 8 delta^2 x^5 (x^2/7 - x/2 + 1/2),

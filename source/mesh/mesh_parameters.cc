@@ -20,7 +20,7 @@ namespace DuctileContact
       scene_names(),
       "Which coarse mesh to build. 'box': one body, a brick given in "
       "subsection Box, boundary ids 0..5 on the faces x-, x+, y-, y+, z-, z+. "
-      "'two bodies': the plate and block of the paper's scene (model.md "
+      "'two bodies': the plate and block of the paper's scene (doc/model.md "
       "section 7), see subsection Two bodies for the ids. 'round bar': the "
       "necking bar of validation rung 3, see subsection Round bar. 'gmsh': "
       "a mesh "

@@ -8,7 +8,7 @@
 namespace DuctileContact
 {
   /**
-   * The energy account of a run (model.md section 6), summed over accepted
+   * The energy account of a run (doc/model.md section 6), summed over accepted
    * steps: the external work by the trapezoidal rule,
    *
    *   W_ext += 1/2 (f_n + f_n+1) . (u_n+1 - u_n)

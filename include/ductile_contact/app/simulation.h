@@ -29,7 +29,7 @@ namespace DuctileContact
   class SolutionWriter;
 
   /**
-   * One quasi-static run (model.md section 6): the mesh and the objects of
+   * One quasi-static run (doc/model.md section 6): the mesh and the objects of
    * the coupled problem are set up, then the load-step loop: a step is
    * solved by the CoupledSolver; a failed step is repeated with a smaller
    * increment (StepController), an accepted one commits the quadrature-

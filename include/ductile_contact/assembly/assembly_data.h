@@ -39,7 +39,7 @@ namespace DuctileContact
     double fracture_viscous_work_increment = 0.;
     /// Of the committed step [J]: the work of the crack driver beyond the
     /// current elastic state, int (-g_k'(s)) (psi_H - psi^+) (s - s_n) dV
-    /// (psi_H the history maximum of the driving energy psi_D, model.md
+    /// (psi_H the history maximum of the driving energy psi_D, doc/model.md
     /// (27); crack_driving_energy()). With the elastic driver it is >= 0
     /// and nonzero where psi^+ has fallen below its maximum while s still
     /// grows (material unloading beside a running crack); with the plastic

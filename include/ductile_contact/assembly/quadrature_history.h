@@ -11,11 +11,11 @@ namespace DuctileContact
   /// Internal state of one quadrature point at the last accepted step.
   struct PointHistory
   {
-    /// (C^p_n)^{-1} and alpha_n (model.md section 3).
+    /// (C^p_n)^{-1} and alpha_n (doc/model.md section 3).
     PlasticHistory plastic;
     /// max over accepted steps of the crack driving energy psi_D
     /// (crack_driving_energy(): psi^+ of (27) with the elastic driver):
-    /// the history that makes s irreversible (model.md section 2, Miehe
+    /// the history that makes s irreversible (doc/model.md section 2, Miehe
     /// 2010).
     double driving_energy_max = 0.;
   };

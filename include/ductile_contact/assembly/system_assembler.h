@@ -25,7 +25,7 @@ namespace DuctileContact
 
   /**
    * Residual and exact tangent of the coupled total-Lagrangian problem
-   * [u | alpha | s] (model.md sections 2-4):
+   * [u | alpha | s] (doc/model.md sections 2-4):
    *
    *   R_u     = int P : Grad du dV - int_dB T . du dA
    *   R_alpha = int dalpha r(F, alpha, s) + y_0 l_p^2 grad dalpha .

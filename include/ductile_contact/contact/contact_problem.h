@@ -49,7 +49,7 @@ namespace DuctileContact
 
   /**
    * Mortar contact with Coulomb friction between deformable bodies
-   * (model.md section 5, contact.md), one or more pairs of boundary
+   * (doc/model.md section 5, doc/contact.md), one or more pairs of boundary
    * surfaces.
    *
    * Discretisation: dual (biorthogonal) multiplier basis Phi_j on the slave

@@ -25,11 +25,11 @@ namespace DuctileContact
 
   /**
    * Segment-based mortar integration of one slave/master face pair
-   * (contact.md, Puso & Laursen 2004): both quad9 faces are split into their
-   * four flat sub-quads; for each slave sub-quad an auxiliary plane through
-   * its centre, normal n0 = the sub-quad normal; the vertices of every master
-   * sub-quad that faces it (n0 . n_m < 0) are projected onto the plane, the
-   * two convex polygons are clipped (Sutherland-Hodgman), the overlap is
+   * (doc/contact.md, Puso & Laursen 2004): both quad9 faces are split into
+   * their four flat sub-quads; for each slave sub-quad an auxiliary plane
+   * through its centre, normal n0 = the sub-quad normal; the vertices of every
+   * master sub-quad that faces it (n0 . n_m < 0) are projected onto the plane,
+   * the two convex polygons are clipped (Sutherland-Hodgman), the overlap is
    * split into triangles (fan from its centroid) with a 16-point collapsed
    * Gauss rule each, and every Gauss point is projected back along n0 onto
    * the curved slave and master faces (parameter points clamped to the

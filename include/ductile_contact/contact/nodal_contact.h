@@ -59,7 +59,7 @@ namespace DuctileContact
   };
 
   /**
-   * Contact law of one slave node (model.md section 5, KKT (44), Coulomb
+   * Contact law of one slave node (doc/model.md section 5, KKT (44), Coulomb
    * (48)): augmented-Lagrangian pressure lambda_j = max(0, lambdahat_j -
    * eps_N g_j / A_j); where lambda_j > 0 and mu_c > 0, the slip since the
    * last accepted step s_j = (I - n_j n_j) H_j / A_j, the accepted

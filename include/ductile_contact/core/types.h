@@ -18,7 +18,7 @@ namespace DuctileContact
   constexpr unsigned int dim = 3;
 
   /**
-   * Blocks of the global system [u | alpha | s] (model.md section 1).
+   * Blocks of the global system [u | alpha | s] (doc/model.md section 1).
    * The block numbers never change, whether or not a scene has DoFs in a
    * block: a scene without plasticity simply has an empty alpha block.
    */

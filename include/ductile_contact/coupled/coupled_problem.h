@@ -24,7 +24,7 @@ namespace DuctileContact
   class ContactProblem;
 
   /**
-   * The coupled problem R(u, alpha, s) = 0 of one load step (model.md
+   * The coupled problem R(u, alpha, s) = 0 of one load step (doc/model.md
    * sections 2-5) as Newton sees it (NonlinearProblem): it owns the system
    * (sparsity pattern with the C0IP and contact couplings, tangent,
    * right-hand side, residual, internal force) and combines the bulk cells

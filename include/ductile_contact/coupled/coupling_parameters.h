@@ -23,7 +23,7 @@ namespace DuctileContact
    *  - monolithic-staggered: monolithic, and a step where Newton fails is
    *    redone staggered before it is cut back.
    *
-   * Irreversibility of s (model.md section 2): `history` (the crack driver
+   * Irreversibility of s (doc/model.md section 2): `history` (the crack driver
    * uses the history maximum of psi^+), `bound` (s_i >= s_n,i at every
    * phase-field DoF, PhaseFieldBound, with the driver from the current
    * psi^+) or `history and bound` (default: both).

@@ -32,8 +32,8 @@ namespace DuctileContact
   };
 
   /**
-   * The finite element layout of model.md section 1 on one distributed mesh:
-   * an hp::FECollection whose elements are FESystem(FE_Q(p)^3, alpha, s),
+   * The finite element layout of doc/model.md section 1 on one distributed
+   * mesh: an hp::FECollection whose elements are FESystem(FE_Q(p)^3, alpha, s),
    * where alpha and s are FE_Q(p) on bodies that carry them and FE_Nothing
    * elsewhere. DoFs are numbered block-wise [u | alpha | s] (Block::*), so a
    * scene without plasticity has an empty alpha block, not zero unknowns.

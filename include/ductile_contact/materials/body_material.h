@@ -13,7 +13,7 @@ namespace DuctileContact
 {
   /**
    * The material law of a body as a pure function of the kinematics and
-   * the history (model.md sections 2-3): neo-Hooke (16) for an elastic
+   * the history (doc/model.md sections 2-3): neo-Hooke (16) for an elastic
    * body, the degraded neo-Hooke law with the split (17) for an elastic
    * body that cracks, the visco-plastic update of section 3 (steps 1-3) for
    * a body that yields (degraded when it also cracks).

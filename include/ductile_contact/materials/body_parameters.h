@@ -11,7 +11,7 @@
 namespace DuctileContact
 {
   /**
-   * Crack phase-field parameters of a body (model.md section 4, (3) and
+   * Crack phase-field parameters of a body (doc/model.md section 4, (3) and
    * (51)), subsection `Body <id>/Fracture`. SI units.
    */
   struct FractureParameters
@@ -41,10 +41,10 @@ namespace DuctileContact
    * One body of a scene: the cells with a given material_id, its material
    * parameters and the physics it carries. Subsection `Body <material id>`.
    *
-   * Elastic law: compressible neo-Hooke, model.md (16) with shear modulus
+   * Elastic law: compressible neo-Hooke, doc/model.md (16) with shear modulus
    * mu and bulk modulus kappa [Pa]; with `Fracture` degraded by g_k(s) with
    * the volumetric/deviatoric split (17); with `Plasticity` the visco-
-   * plastic J2 model of model.md section 3 with the hardening field alpha.
+   * plastic J2 model of doc/model.md section 3 with the hardening field alpha.
    */
   struct BodyParameters
   {

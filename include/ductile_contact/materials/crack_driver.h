@@ -12,7 +12,7 @@ namespace DuctileContact
   /// Fracture/Crack driver: which energy density drives the phase field.
   enum class CrackDriverType
   {
-    /// psi^+ of model.md (27), the paper's driver.
+    /// psi^+ of doc/model.md (27), the paper's driver.
     elastic,
     /// zeta <psi^+ + W_p(alpha) - w_c>, plastic work drives the crack too.
     elastic_plastic
@@ -58,7 +58,7 @@ namespace DuctileContact
    * -g_k'(s) max_t psi_D, a pure function of the material point's
    * response @p m (psi^+ and its derivatives) and of alpha:
    *
-   *  - elastic (model.md (27), the paper): psi_D = psi^+;
+   *  - elastic (doc/model.md (27), the paper): psi_D = psi^+;
    *  - elastic plus plastic work (after Miehe, Hofacker, Schaenzel &
    *    Aldakheel 2015, CMAME 294, and Miehe, Aldakheel & Raina 2016, IJP
    *    84: a crack driving state function of the elastic and the plastic

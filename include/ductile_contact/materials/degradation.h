@@ -3,7 +3,7 @@
 namespace DuctileContact
 {
   /**
-   * Parameters of the crack degradation function of model.md section 2,
+   * Parameters of the crack degradation function of doc/model.md section 2,
    * after (17):
    *
    *   g(s)   = a_g ((1 - s)^3 - (1 - s)^2) - 2 (1 - s)^3 + 3 (1 - s)^2,
@@ -20,15 +20,15 @@ namespace DuctileContact
   struct DegradationParameters
   {
     /**
-     * a_g >= 0 in g(s), model.md section 2: the slope -g'(0) = a_g (1 - k)
+     * a_g >= 0 in g(s), doc/model.md section 2: the slope -g'(0) = a_g (1 - k)
      * at the intact state; a_g = 2 gives the quadratic degradation
      * g(s) = (1 - s)^2.
      */
     double a = 2.;
 
     /**
-     * Residual stiffness k in g_k(s) = (1 - k) g(s) + k, model.md section 2:
-     * the fraction of the stiffness a fully broken point (s = 1) keeps, so
+     * Residual stiffness k in g_k(s) = (1 - k) g(s) + k, doc/model.md section
+     * 2: the fraction of the stiffness a fully broken point (s = 1) keeps, so
      * that the tangent stays invertible.
      */
     double residual_stiffness = 1e-8;
@@ -37,8 +37,8 @@ namespace DuctileContact
 
 
   /**
-   * The degradation g_k(s) = (1 - k) g(s) + k of model.md section 2 (used in
-   * (16)-(17)), written with x = 1 - s as g = (a_g - 2) x^3 + (3 - a_g) x^2.
+   * The degradation g_k(s) = (1 - k) g(s) + k of doc/model.md section 2 (used
+   * in (16)-(17)), written with x = 1 - s as g = (a_g - 2) x^3 + (3 - a_g) x^2.
    * A template so that automatic-differentiation numbers (Sacado) can use
    * it; g_k(0) = 1, g_k(s) = k for s >= 1.
    */
@@ -59,7 +59,7 @@ namespace DuctileContact
    * g_k'(s) = -(1 - k) (3 (a_g - 2) x^2 + 2 (3 - a_g) x), x = 1 - s: the
    * derivative of degradation_value(); g_k'(0) = -a_g (1 - k), g_k'(s) = 0
    * for s >= 1. It enters the crack driving force H = -g_k'(s) psi^+ of
-   * model.md (27).
+   * doc/model.md (27).
    */
   inline double
   degradation_derivative(const double s, const DegradationParameters &p)
@@ -75,7 +75,7 @@ namespace DuctileContact
 
   /**
    * g_k''(s) = (1 - k) (6 (a_g - 2) x + 2 (3 - a_g)), x = 1 - s: the second
-   * derivative of degradation_value(), needed for the tangent of model.md
+   * derivative of degradation_value(), needed for the tangent of doc/model.md
    * (51) with respect to s; 0 for s > 1 (at s = 1 the left limit).
    */
   inline double

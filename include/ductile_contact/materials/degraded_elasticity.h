@@ -11,7 +11,7 @@ namespace DuctileContact
 {
   /**
    * Degraded compressible neo-Hooke law of an elastic body that can crack
-   * (no plasticity, C^p = I, so b^e = F F^T), model.md (16)-(19) and (27):
+   * (no plasticity, C^p = I, so b^e = F F^T), doc/model.md (16)-(19) and (27):
    *
    *   Psi^e = g_vol(s) kappa/2 (J - 1)^2 + g_dev(s) mu/2 (tr bbar - 3),   (16)
    *   g_vol(s) = g_k(s) if J > 1, else 1;   g_dev(s) = g_k(s),            (17)

@@ -5,7 +5,7 @@
  * The default of every material parameter, defined once: the in-class
  * defaults of BodyParameters, FractureParameters and PlasticityParameters
  * (and so the defaults --print-parameters shows) all refer to these.
- * The hardening values are the paper's aluminium (model.md section 7).
+ * The hardening values are the paper's aluminium (doc/model.md section 7).
  */
 namespace DuctileContact
 {

@@ -8,7 +8,7 @@
 namespace DuctileContact
 {
   /// Quadrature-point history of the plastic update, committed only on
-  /// accepted steps (model.md section 3).
+  /// accepted steps (doc/model.md section 3).
   struct PlasticHistory
   {
     /// (C^p)^{-1}, symmetric with determinant 1.
@@ -29,12 +29,12 @@ namespace DuctileContact
   {
     /// J = det F.
     double J = 1.;
-    /// Stored energy Psi^e of model.md (16), degraded where the body
+    /// Stored energy Psi^e of doc/model.md (16), degraded where the body
     /// cracks.
     double psi_elastic = 0.;
-    /// Crack driving energy psi^+ of model.md (27): H = -g_k'(s) psi^+.
+    /// Crack driving energy psi^+ of doc/model.md (27): H = -g_k'(s) psi^+.
     double psi_plus = 0.;
-    /// Kirchhoff stress tau of model.md (18)-(19).
+    /// Kirchhoff stress tau of doc/model.md (18)-(19).
     dealii::SymmetricTensor<2, dim> tau;
     /// First Piola-Kirchhoff stress P = tau F^{-T}.
     dealii::Tensor<2, dim> P;

@@ -9,7 +9,7 @@
 namespace DuctileContact
 {
   /**
-   * Compressible neo-Hooke law of model.md (16) and (19) for an intact
+   * Compressible neo-Hooke law of doc/model.md (16) and (19) for an intact
    * (s = 0), elastic (C^p = I) material point:
    *
    *   Psi = kappa/2 (J - 1)^2 + mu/2 (tr bbar - 3),  bbar = J^{-2/3} F F^T,

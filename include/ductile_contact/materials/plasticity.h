@@ -13,7 +13,7 @@ namespace DuctileContact
 {
   /**
    * Material parameters of the finite-strain visco-plastic J2 model with
-   * saturation hardening and crack degradation (model.md sections 2-3).
+   * saturation hardening and crack degradation (doc/model.md sections 2-3).
    * Stresses and moduli in Pa, viscosity eta_p in Pa times pseudo time.
    */
   struct PlasticityParameters
@@ -33,7 +33,7 @@ namespace DuctileContact
     double volumetric_switch_width = MaterialDefaults::volumetric_switch_width;
   };
 
-  /// Saturation hardening yhat(alpha), model.md (21).
+  /// Saturation hardening yhat(alpha), doc/model.md (21).
   double
   hardening_stress(const double alpha, const PlasticityParameters &p);
 
@@ -50,7 +50,7 @@ namespace DuctileContact
                  const PlasticityParameters            &p);
 
   /**
-   * Material point update of model.md section 3, steps 1-3, a pure
+   * Material point update of doc/model.md section 3, steps 1-3, a pure
    * function: trial state b_tr = F (C^p_n)^{-1} F^T and yield switch chi_p
    * from the degraded trial stress; lambda_p = sqrt(3/2) (alpha -
    * alpha_n)/dt and

@@ -74,7 +74,7 @@ namespace DuctileContact
       std::vector<unsigned int> subdivisions{1, 1, 1};
     } box;
 
-    /// Plate + block of the paper's scene (model.md section 7).
+    /// Plate + block of the paper's scene (doc/model.md section 7).
     struct TwoBodies
     {
       dealii::Point<dim>        plate_size{0.3, 0.2, 0.02};

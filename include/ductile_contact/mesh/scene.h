@@ -29,7 +29,7 @@ namespace DuctileContact
                    dealii::Triangulation<dim> &tria);
 
   /**
-   * The plate and block of model.md section 7 as one mesh of two
+   * The plate and block of doc/model.md section 7 as one mesh of two
    * disconnected bodies (no shared vertices): material id 0 = plate,
    * 1 = block; boundary ids 1 = clamp (plate face x = Lx), 3 = plate top,
    * 2 = block top, 4 = block bottom, 5 = block sides, 0 = other plate faces.

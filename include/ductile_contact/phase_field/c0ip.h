@@ -14,7 +14,7 @@ namespace DuctileContact
 {
   /**
    * Coefficients of the symmetric bilinear form of the crack regularisation
-   * (model.md (3) and (51)):
+   * (doc/model.md (3) and (51)):
    *
    *   a(s, v) = int mass s v + gradient grad s . grad v
    *                 + bilaplacian Lap s Lap v dV          (cells)
@@ -43,7 +43,7 @@ namespace DuctileContact
   };
 
   /**
-   * Default penalty gamma_IP = (d/2) p (p+1) = 1.5 p(p+1) in 3-D. model.md
+   * Default penalty gamma_IP = (d/2) p (p+1) = 1.5 p(p+1) in 3-D. doc/model.md
    * suggests p(p+1), the 2-D value of deal.II step-47; in 3-D with the
    * Laplacian form that is at the edge of stability: for Q2 the
    * manufactured solution's error jumps up at h = 1/8 (a near-singular

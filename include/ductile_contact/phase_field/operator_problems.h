@@ -51,7 +51,8 @@ namespace DuctileContact
   /// Result of the crack-energy strip (validation rung 6).
   struct StripResult
   {
-    /// int gamma dV / cross-section area, i.e. Gamma(L) of model.md section 4.
+    /// int gamma dV / cross-section area, i.e. Gamma(L) of doc/model.md
+    /// section 4.
     double            gamma = 0.;
     OperatorSolveInfo info;
   };

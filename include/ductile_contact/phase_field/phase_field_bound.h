@@ -14,7 +14,7 @@ namespace DuctileContact
 {
   /**
    * Irreversibility of the crack as a bound on the phase-field DoFs,
-   * s_i >= s_n,i (model.md section 2: "any method must keep s from
+   * s_i >= s_n,i (doc/model.md section 2: "any method must keep s from
    * decreasing"), by a primal-dual active set, i.e. semismooth Newton
    * (Hintermueller, Ito, Kunisch 2002; for phase-field fracture as in
    * Heister, Wheeler, Wick 2015). The KKT conditions of the bound,
@@ -40,7 +40,7 @@ namespace DuctileContact
    * the coupled solve.
    *
    * With Coupling/Irreversibility = history and bound (the default) the
-   * history field of psi^+ (model.md's default) acts as well: it keeps the
+   * history field of psi^+ (doc/model.md's default) acts as well: it keeps the
    * driving force from falling; the bound keeps s itself from falling,
    * which the history alone does not guarantee (the gradient and
    * bi-Laplacian terms of the neighbours act on s too; before g was
