@@ -30,11 +30,11 @@ namespace
   std::vector<std::vector<double>>
   read_rows(const std::string &file, const std::string &name)
   {
-    HDF5::File          h5(file, HDF5::File::FileAccessMode::open);
-    auto                data = h5.open_dataset(name);
-    const auto          dims = data.get_dimensions();
-    std::vector<double> flat = data.read<std::vector<double>>();
-    const std::size_t   columns = dims.size() > 1 ? dims[1] : 1;
+    HDF5::File                       h5(file, HDF5::File::FileAccessMode::open);
+    auto                             data    = h5.open_dataset(name);
+    const auto                       dims    = data.get_dimensions();
+    std::vector<double>              flat    = data.read<std::vector<double>>();
+    const std::size_t                columns = dims.size() > 1 ? dims[1] : 1;
     std::vector<std::vector<double>> rows(dims[0]);
     for (std::size_t i = 0; i < dims[0]; ++i)
       rows[i].assign(flat.begin() + i * columns,
@@ -65,8 +65,8 @@ main(int argc, char **argv)
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
   // 1. Homogeneous stretch.
-  const std::string stretch = Testing::unit_cube_prm() +
-                              Testing::uniaxial_pull_prm("0.1*t") + R"(
+  const std::string stretch =
+    Testing::unit_cube_prm() + Testing::uniaxial_pull_prm("0.1*t") + R"(
 subsection Load stepping
   set End time  = 1
   set Time step = 0.5
@@ -95,7 +95,7 @@ subsection Output
         }
       const std::string xdmf = Testing::file_text("stretch_h5/solution.xdmf");
       std::vector<std::string> times, referenced;
-      const std::regex time_pattern("<Time Value=\"([^\"]*)\"");
+      const std::regex         time_pattern("<Time Value=\"([^\"]*)\"");
       for (std::sregex_iterator it(xdmf.begin(), xdmf.end(), time_pattern);
            it != std::sregex_iterator();
            ++it)
@@ -105,9 +105,9 @@ subsection Output
       for (std::sregex_iterator it(xdmf.begin(), xdmf.end(), file_pattern);
            it != std::sregex_iterator();
            ++it)
-        files_exist =
-          files_exist && std::filesystem::exists("stretch_h5/" + (*it)[1].str());
-      const double F_h5 = h5_run.at("F1_x").back(),
+        files_exist = files_exist &&
+                      std::filesystem::exists("stretch_h5/" + (*it)[1].str());
+      const double F_h5  = h5_run.at("F1_x").back(),
                    F_vtu = vtu_run.at("F1_x").back();
       out << "u_x = 0.1 x at every node (float precision, 1e-8): "
           << Testing::yes_no(worst_x < 1e-8 && !nodes.empty()) << "\n"
@@ -119,8 +119,9 @@ subsection Output
           << "files: " << files_in("stretch_h5", "mesh")
           << files_in("stretch_h5", "solution") << "\n"
           << "xdmf times: " << times.size() << " (" << times.front() << " ... "
-          << times.back() << "), referenced files exist: "
-          << Testing::yes_no(files_exist) << "\n";
+          << times.back()
+          << "), referenced files exist: " << Testing::yes_no(files_exist)
+          << "\n";
       std::cout << "worst u_x " << worst_x << ", lateral " << lo << " .. " << hi
                 << ", F1_x " << F_h5 << " / " << F_vtu << std::endl;
     }
