@@ -104,21 +104,9 @@ main()
       if (D.value > 1e-4 * w_c)
         {
           ++open_samples;
-          double     diff = 0., norm = 0.;
-          const auto add = [&](const double fd, const double exact) {
-            diff += (fd - exact) * (fd - exact);
-            norm += exact * exact;
-          };
-          for (unsigned int c = 0; c < dim; ++c)
-            for (unsigned int C = 0; C < dim; ++C)
-              {
-                Tensor<2, dim> dF;
-                dF[c][C] = 1.;
-                add(derivative(dF, 0., 0.), D.d_dF[c][C]);
-              }
-          add(derivative(Tensor<2, dim>(), 1., 0.), D.d_dalpha);
-          add(derivative(Tensor<2, dim>(), 0., 1.), D.d_ds);
-          worst = std::max(worst, std::sqrt(diff / norm));
+          worst = std::max(worst,
+                           Testing::point_gradient_error(
+                             derivative, D.d_dF, D.d_dalpha, D.d_ds));
         }
       else if (m.psi_plus + plastic_work_density(alpha, p) < w_c)
         {

@@ -479,6 +479,37 @@ end
     return (8. * (f(h) - f(-h)) - (f(2. * h) - f(-2. * h))) / (12. * h);
   }
 
+  /**
+   * |D - G| / |G| over the 11 directions (F_cD, alpha, s) of a material
+   * point's derivative: @p derivative(dF, dalpha, ds) the difference
+   * quotient along a direction, G = (@p d_dF, @p d_dalpha, @p d_ds) the
+   * exact gradient.
+   */
+  template <typename Derivative>
+  double
+  point_gradient_error(const Derivative                             &derivative,
+                       const dealii::Tensor<2, DuctileContact::dim> &d_dF,
+                       const double                                  d_dalpha,
+                       const double                                  d_ds)
+  {
+    constexpr unsigned int dim  = DuctileContact::dim;
+    double                 diff = 0., norm = 0.;
+    const auto             add = [&](const double fd, const double exact) {
+      diff += (fd - exact) * (fd - exact);
+      norm += exact * exact;
+    };
+    for (unsigned int c = 0; c < dim; ++c)
+      for (unsigned int C = 0; C < dim; ++C)
+        {
+          dealii::Tensor<2, dim> dF;
+          dF[c][C] = 1.;
+          add(derivative(dF, 0., 0.), d_dF[c][C]);
+        }
+    add(derivative(dealii::Tensor<2, dim>(), 1., 0.), d_dalpha);
+    add(derivative(dealii::Tensor<2, dim>(), 0., 1.), d_ds);
+    return std::sqrt(diff / norm);
+  }
+
   /// "yes"/"no" for a condition: what the output file records.
   inline const char *
   yes_no(const bool condition)
