@@ -17,7 +17,17 @@
 //     sigma = yhat(eps - sigma/E) within 1 % up to 2 % strain, and the
 //     overstress vanishes linearly with eta_p;
 //  4. unloading from a plastic state is elastic: no yielding, C^p (to
-//     round-off) and alpha unchanged, stress drops with Young's modulus.
+//     round-off) and alpha unchanged, stress drops with Young's modulus;
+//  5. the hold of a non-yielding point (model.md section 3.1, choice 3)
+//     in simple shear, with the force r_n = 0.3 y_0 that the rest of the
+//     field held the point with at the last accepted step: with F
+//     unchanged the accepted state is a fixed point (r = r_n at alpha_n,
+//     C^p unchanged), so the pull does not move alpha again in every step
+//     (it did while the hold was c (alpha - alpha_n) alone: the paper
+//     scene's force depended on the number of load steps); the pull
+//     lowers the shear at which the point yields; at that switch the two
+//     branches of r agree to second order in alpha - alpha_n (the
+//     difference shrinks 4x when alpha - alpha_n halves).
 #include <deal.II/base/tensor.h>
 
 #include <ductile_contact/materials/plasticity.h>
@@ -286,5 +296,68 @@ main()
                          std::abs(slope - E) < 0.01 * E;
     out << "unloading is elastic with slope E (1 %): "
         << Testing::yes_no(elastic) << std::endl;
+  }
+
+  // 5. The hold of a non-yielding point.
+  {
+    const auto shear = [](const double gamma) {
+      Tensor<2, dim> F = unit_symmetric_tensor<dim>();
+      F[0][1]          = gamma;
+      return F;
+    };
+    const double   dt = 0.01, pull = 0.3 * p.initial_yield;
+    PlasticHistory free_point, pulled;
+    pulled.r = pull;
+    // The shear at which the trial test switches, by bisection.
+    const auto onset = [&](const PlasticHistory &h) {
+      double lo = 0., hi = 0.1;
+      for (unsigned int i = 0; i < 100; ++i)
+        {
+          const double mid = 0.5 * (lo + hi);
+          (plastic_update(shear(mid), h, h.alpha, 0., dt, p, false).yielding
+             ? hi
+             : lo)         = mid;
+        }
+      return 0.5 * (lo + hi);
+    };
+    const double gamma_free = onset(free_point), gamma_pulled = onset(pulled);
+
+    const MaterialResponse held =
+      plastic_update(shear(0.5 * gamma_pulled), pulled, 0., 0., dt, p, false);
+    out << "a held point with F unchanged stays: r = r_n, C^p unchanged: "
+        << Testing::yes_no(!held.yielding && held.r == pull &&
+                           (held.updated.Cp_inv - pulled.Cp_inv).norm() < 1e-14)
+        << std::endl;
+    std::cout << "onset of yield in shear: " << gamma_free << " free, "
+              << gamma_pulled << " pulled" << std::endl;
+    out << "the pull lowers the yield onset (ratio below 0.8): "
+        << Testing::yes_no(gamma_pulled < 0.8 * gamma_free) << std::endl;
+
+    const auto branch_gap = [&](const double d_alpha) {
+      const auto r = [&](const bool yielding) {
+        return plastic_update(shear(gamma_pulled),
+                              pulled,
+                              d_alpha,
+                              0.,
+                              dt,
+                              p,
+                              true,
+                              yielding)
+          .r;
+      };
+      return std::abs(r(true) - r(false));
+    };
+    const double d_alpha = 1e-3;
+    const double ratio   = branch_gap(d_alpha) / branch_gap(0.5 * d_alpha);
+    const double slope =
+      plastic_update(shear(gamma_pulled), pulled, 0., 0., dt, p, true, false)
+        .dr_dalpha;
+    std::cout << "branch gap at the switch: " << branch_gap(d_alpha)
+              << " against slope x dalpha " << slope * d_alpha << ", ratio "
+              << ratio << std::endl;
+    out << "both branches of r agree to second order at the switch: "
+        << Testing::yes_no(std::abs(ratio - 4.) < 0.2 &&
+                           branch_gap(d_alpha) < 0.05 * slope * d_alpha)
+        << std::endl;
   }
 }

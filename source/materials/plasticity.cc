@@ -125,10 +125,12 @@ namespace DuctileContact
       const SymmetricTensor<2, dim, Number> tau_dev_tr =
         mu_g * deviator(b_bar_tr);
       const Number norm_tr = std::sqrt(tau_dev_tr * tau_dev_tr);
-      e.trial_yielding =
-        value_of(norm_tr) -
-          std::sqrt(2. / 3.) * hardening_of(history_n.alpha, p) >
-        0.;
+      // The yielding branch of r at alpha_n against the non-yielding one,
+      // r_n: the point yields where the force of the rest of the field,
+      // r_n, exceeds what the trial state leaves (see the header).
+      e.trial_yielding = std::sqrt(1.5) * value_of(norm_tr) -
+                           hardening_of(history_n.alpha, p) + history_n.r >
+                         0.;
       e.yielding = frozen_yielding ? *frozen_yielding : e.trial_yielding;
 
       // 2. Plastic flow from the current alpha of the global field, at
@@ -181,10 +183,12 @@ namespace DuctileContact
         e.r += hardening_of(alpha, p) - std::sqrt(1.5) * (n_tr * tau_dev);
       else
         {
-          // Hold alpha at alpha_n with the yielding branch's slope.
+          // Hold alpha at alpha_n with the yielding branch's slope, against
+          // the force r_n that held it there at the last accepted step.
           e.r +=
             (mu_g * trace(b_bar_tr) + hardening_slope_of(history_n.alpha, p)) *
-            (alpha - history_n.alpha);
+              (alpha - history_n.alpha) +
+            history_n.r;
         }
       return e;
     }
@@ -239,7 +243,7 @@ namespace DuctileContact
         response.r              = e.r;
         response.yielding       = e.yielding;
         response.trial_yielding = e.trial_yielding;
-        response.updated        = {e.Cp_inv, alpha};
+        response.updated        = {e.Cp_inv, alpha, e.r};
         return response;
       }
 
@@ -259,6 +263,7 @@ namespace DuctileContact
     response.yielding       = e.yielding;
     response.trial_yielding = e.trial_yielding;
     response.updated.alpha  = alpha;
+    response.updated.r      = e.r.val();
     for (unsigned int a = 0; a < dim; ++a)
       for (unsigned int b = a; b < dim; ++b)
         {

@@ -16,6 +16,11 @@ namespace DuctileContact
       dealii::unit_symmetric_tensor<dim>();
     /// alpha_n
     double alpha = 0.;
+    /// r_n, the local part r of (50) at the accepted state, in Pa: the
+    /// force with which the rest of the alpha field (the gradient term, the
+    /// interpolation shared by a cell's points) holds the point where it
+    /// is. Non-yielding points keep it (doc/model.md section 3.1, choice 3).
+    double r = 0.;
   };
 
   /**

@@ -91,11 +91,24 @@ namespace DuctileContact
    *    where chi_p switches, |tau_tr| ~ 0.8 y_0 and the direction differs
    *    from n_tr by under 1 %;
    *  - where chi_p = 0 the local part is eta_p (alpha - alpha_n)/dt + c
-   *    (alpha - alpha_n) with c = mu g_dev tr[bbar_tr] + yhat'(alpha_n),
-   *    the slope the yielding branch has there (~3 mu + h): the continuum
-   *    equation (alpha = alpha_n, no flow) is the same, but alpha is held
-   *    at alpha_n as firmly as the yielding points hold theirs, and r is
-   *    continuous to first order in alpha - alpha_n where chi_p switches;
+   *    (alpha - alpha_n) + r_n with c = mu g_dev tr[bbar_tr] +
+   *    yhat'(alpha_n), the slope the yielding branch has there (~3 mu +
+   *    h), and r_n the local part at the last accepted state
+   *    (PlasticHistory::r): the continuum equation (alpha = alpha_n, no
+   *    flow) is the same, but alpha is held at alpha_n as firmly as the
+   *    yielding points hold theirs, and the force r_n with which the rest
+   *    of the field (the gradient term, the Q2 interpolation shared by a
+   *    cell's points) held it there stays balanced: an accepted state is
+   *    a fixed point of the next step. Without r_n the hold relaxed to
+   *    zero in every step and the pull moved alpha, and the flow with it,
+   *    once more per step: the paper scene's force fell by 2 % per
+   *    halving of the load step without converging;
+   *  - chi_p = [sqrt(3/2) |tau_dev,tr| - yhat(alpha_n) + r_n > 0]: the
+   *    switch at which both branches of r agree at alpha_n, so r is
+   *    continuous to first order in alpha - alpha_n where chi_p switches.
+   *    With r_n the pull of the gradient term, this is the gradient
+   *    model's yield condition (a point pulled by yielding neighbours
+   *    yields earlier);
    *  - the gradient term y_0 l_p^2 grad(alpha) . grad(delta alpha) acts
    *    everywhere (SystemAssembler), not only where chi_p = 1: with c, an
    *    elastic region holds alpha - alpha_n to a layer of width l_p
