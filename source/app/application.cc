@@ -2,7 +2,9 @@
 #include <deal.II/base/utilities.h>
 
 #include <ductile_contact/app/application.h>
+#include <ductile_contact/app/checkpoint.h>
 #include <ductile_contact/app/simulation.h>
+#include <ductile_contact/app/stop_request.h>
 #include <ductile_contact/core/input_error.h>
 #include <ductile_contact/mesh/scene.h>
 #include <ductile_contact/output/probe_points.h>
@@ -22,8 +24,12 @@ namespace DuctileContact
   {
     const char *usage =
       "Usage: ductile-contact [--validate] [--print-parameters[=FORMAT]] "
-      "FILE.prm\n"
-      "       mpirun -np N ductile-contact FILE.prm\n"
+      "[--resume] FILE.prm\n"
+      "       mpirun -np N ductile-contact [--resume] FILE.prm\n"
+      "  --resume            continue from the newest complete checkpoint in "
+      "the output directory of FILE.prm (Checkpoint/Interval), on any "
+      "number of ranks; FILE.prm may change the end time, output, solver "
+      "and Newton settings, not the mesh, bodies or contact pairs\n"
       "  --validate          parse and check FILE.prm (and its scene), then "
       "exit: 0 if valid\n"
       "  --print-parameters  print every entry with its documentation and "
@@ -133,7 +139,7 @@ namespace DuctileContact
   run_application(int argc, char **argv, const MPI_Comm comm)
   {
     const bool  root     = Utilities::MPI::this_mpi_process(comm) == 0;
-    bool        validate = false, print_parameters = false;
+    bool        validate = false, print_parameters = false, resume = false;
     std::string file_name;
     ParameterHandler::OutputStyle style = ParameterHandler::PRM;
     for (int i = 1; i < argc; ++i)
@@ -141,6 +147,8 @@ namespace DuctileContact
         const std::string arg = argv[i];
         if (arg == "--validate")
           validate = true;
+        else if (arg == "--resume")
+          resume = true;
         else if (arg.rfind("--print-parameters", 0) == 0)
           {
             print_parameters         = true;
@@ -239,8 +247,36 @@ namespace DuctileContact
       }
 
     // A run: results folder with a copy of the input and all parameters.
-    const std::string &dir = parameters.output.directory;
-    TeeStream          log(std::cout);
+    const std::string       &dir = parameters.output.directory;
+    std::string              checkpoint;
+    std::vector<std::string> accepted_changes;
+    if (resume)
+      try
+        {
+          const Checkpoint checkpoints(dir, parameters.checkpoint.keep, comm);
+          checkpoint = checkpoints.newest();
+          if (checkpoint.empty())
+            throw InputError("Output/Directory",
+                             dir,
+                             "a folder with a complete checkpoint to resume "
+                             "from (there is none in '" +
+                               dir + "/checkpoints')");
+          std::ostringstream current;
+          parameters.prm.print_parameters(
+            current,
+            ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
+          accepted_changes =
+            compare_parameters(checkpoints.read(checkpoint, "parameters.prm"),
+                               current.str());
+        }
+      catch (const InputError &e)
+        {
+          if (root)
+            std::cerr << "Error in input file '" << file_name
+                      << "' (--resume): " << e.what() << std::endl;
+          return 1;
+        }
+    TeeStream log(std::cout);
     if (root)
       {
         std::error_code ec;
@@ -256,7 +292,7 @@ namespace DuctileContact
       return 1;
     if (root)
       {
-        log.open_file(dir + "/log.txt");
+        log.open_file(dir + "/log.txt", resume);
         std::filesystem::copy_file(
           file_name,
           dir + "/input.prm",
@@ -270,7 +306,25 @@ namespace DuctileContact
           << Utilities::MPI::n_mpi_processes(comm)
           << " MPI rank(s), results in " << dir << "/" << std::endl;
 
-    Simulation simulation(parameters, comm, log);
-    return simulation.run();
+    if (resume && root)
+      {
+        log << "Resuming from " << checkpoint << std::endl;
+        for (const std::string &change : accepted_changes)
+          log << "  changed since the checkpoint, taken: " << change
+              << std::endl;
+      }
+
+    install_stop_handlers();
+    try
+      {
+        Simulation simulation(parameters, comm, log, checkpoint);
+        return simulation.run();
+      }
+    catch (const InputError &e)
+      {
+        if (root)
+          log << "Error: " << e.what() << std::endl;
+        return 1;
+      }
   }
 } // namespace DuctileContact

@@ -113,6 +113,7 @@ namespace DuctileContact
     coupling.declare(prm);
     linear_solver.declare(prm);
     output.declare(prm);
+    checkpoint.declare(prm);
   }
 
 

@@ -6,7 +6,9 @@
 #include <ductile_contact/app/application.h>
 #include <ductile_contact/app/simulation.h>
 #include <ductile_contact/app/step_controller.h>
+#include <ductile_contact/app/stop_request.h>
 #include <ductile_contact/contact/contact_problem.h>
+#include <ductile_contact/core/input_error.h>
 #include <ductile_contact/coupled/coupled_problem.h>
 #include <ductile_contact/coupled/coupled_solver.h>
 #include <ductile_contact/output/progress_line.h>
@@ -14,6 +16,8 @@
 #include <ductile_contact/solver/linear_solver.h>
 #include <ductile_contact/solver/newton_solver.h>
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -24,9 +28,11 @@ namespace DuctileContact
 
   Simulation::Simulation(const RunParameters &parameters,
                          const MPI_Comm       comm,
-                         TeeStream           &log)
+                         TeeStream           &log,
+                         const std::string   &resume_from)
       : parameters(parameters)
       , comm(comm)
+      , resume_from(resume_from)
       , log(log)
       , pcout(log, Utilities::MPI::this_mpi_process(comm) == 0)
       , verbose_out(log,
@@ -35,6 +41,10 @@ namespace DuctileContact
       , timer(comm, pcout, TimerOutput::summary, TimerOutput::wall_times)
       , triangulation(comm)
       , statistics(parameters.output.directory + "/statistics")
+      , controller(parameters.load_stepping)
+      , checkpoints(parameters.output.directory,
+                    parameters.checkpoint.keep,
+                    comm)
   {
     for (const BodyParameters &b : parameters.bodies)
       bodies[b.material_id] = &b;
@@ -47,12 +57,32 @@ namespace DuctileContact
 
 
   void
+  Simulation::create_mesh()
+  {
+    TimerOutput::Scope scope(timer, "setup: mesh");
+    if (resume_from.empty())
+      {
+        build_and_check_mesh(parameters, triangulation, true);
+        return;
+      }
+    build_and_check_mesh(parameters, triangulation, false);
+    const std::string saved = checkpoints.read(resume_from, "coarse_mesh");
+    const std::string here = Checkpoint::coarse_mesh_fingerprint(triangulation);
+    if (Utilities::trim(saved) != here)
+      throw InputError("Mesh",
+                       "(a coarse mesh of " + here + ")",
+                       "the coarse mesh the checkpoint was made on (" +
+                         Utilities::trim(saved) +
+                         "); has the mesh file changed?");
+    Checkpoint::load_mesh(resume_from, triangulation);
+  }
+
+
+
+  void
   Simulation::setup()
   {
-    {
-      TimerOutput::Scope scope(timer, "setup: mesh");
-      build_and_check_mesh(parameters, triangulation, true);
-    }
+    create_mesh();
 
     std::map<types::material_id, BodyFields> fields;
     for (const BodyParameters &b : parameters.bodies)
@@ -126,7 +156,7 @@ namespace DuctileContact
                                               *discretisation,
                                               bodies);
 
-    for (auto *v : {&u, &internal_force})
+    for (auto *v : {&u, &internal_force, &last_increment})
       v->reinit(discretisation->owned_partitioning, comm);
     for (auto *v : {&u_ghosted, &old_solution})
       v->reinit(discretisation->owned_partitioning,
@@ -321,9 +351,10 @@ namespace DuctileContact
       return it == sections.end() ? 0. : it->second;
     };
     statistics.add("assembly_time",
-                   seconds("assembly") + seconds("assembly (line search)"));
-    statistics.add("solve_time", seconds("linear solve"));
-    statistics.add("wall_time", MPI_Wtime() - wall_start);
+                   earlier_assembly + seconds("assembly") +
+                     seconds("assembly (line search)"));
+    statistics.add("solve_time", earlier_solve + seconds("linear solve"));
+    statistics.add("wall_time", earlier_wall + MPI_Wtime() - wall_start);
   }
 
 
@@ -418,34 +449,149 @@ namespace DuctileContact
 
 
 
+  void
+  Simulation::start()
+  {
+    u            = 0;
+    old_solution = u;
+    committed =
+      commit({0., parameters.load_stepping.time_step, &old_solution, &history});
+    record_step(0, 0., 0., StepReport(), 0);
+    if (parameters.output.interval > 0)
+      write_output(0, 0.);
+  }
+
+
+
+  std::string
+  Simulation::run_state() const
+  {
+    const auto sections = timer.get_summary_data(TimerOutput::total_wall_time);
+    const auto seconds  = [&](const std::string &name) {
+      const auto it = sections.find(name);
+      return it == sections.end() ? 0. : it->second;
+    };
+    const double wall     = earlier_wall + MPI_Wtime() - wall_start;
+    const double assembly = earlier_assembly + seconds("assembly") +
+                            seconds("assembly (line search)");
+    const double solve = earlier_solve + seconds("linear solve");
+
+    std::ostringstream              text;
+    boost::archive::binary_oarchive ar(text);
+    ar << step << t << last_dt << wall << assembly << solve << controller
+       << energy << statistics << *writer;
+    std::vector<double>                                      contact_state;
+    std::vector<std::vector<std::pair<double, std::string>>> contact_series;
+    if (contact)
+      {
+        contact_state  = contact->committed_state();
+        contact_series = contact->output_series();
+      }
+    ar << contact_state << contact_series;
+    return text.str();
+  }
+
+
+
+  void
+  Simulation::load_run_state(const std::string &text)
+  {
+    std::istringstream              in(text);
+    boost::archive::binary_iarchive ar(in);
+    ar >> step >> t >> last_dt >> earlier_wall >> earlier_assembly >>
+      earlier_solve >> controller >> energy >> statistics >> *writer;
+    std::vector<double>                                      contact_state;
+    std::vector<std::vector<std::pair<double, std::string>>> contact_series;
+    ar >> contact_state >> contact_series;
+    if (contact)
+      {
+        contact->restore_committed_state(contact_state);
+        contact->output_series() = contact_series;
+      }
+    else if (!contact_state.empty())
+      throw InputError("the checkpoint has a contact state, but this run "
+                       "has no contact pairs");
+  }
+
+
+
+  void
+  Simulation::restore()
+  {
+    TimerOutput::Scope scope(timer, "checkpoint");
+    energy.last_force().reinit(discretisation->owned_partitioning, comm);
+    Checkpoint::CellData cells;
+    Checkpoint::load_data(discretisation->dof_handler,
+                          {&u, &last_increment, &energy.last_force()},
+                          cells);
+    for (const auto &cell : discretisation->dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          !history.unpack(cell, cells[cell->active_cell_index()]))
+        throw InputError("the checkpoint's quadrature-point history does "
+                         "not fit this run's quadrature");
+    old_solution = u;
+    u_ghosted    = u;
+    load_run_state(checkpoints.read(resume_from, "state.bin"));
+    assembler->cell_averages(u_ghosted,
+                             {t, last_dt, &old_solution, &history},
+                             cell_quantities);
+    // The statistics end at the checkpoint's step: rows a killed run
+    // wrote after it are dropped now, not at the next step.
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      statistics.write();
+    pcout << "Resumed from " << resume_from << " at step " << step
+          << ", t = " << t << std::endl;
+  }
+
+
+
+  void
+  Simulation::write_checkpoint()
+  {
+    TimerOutput::Scope   scope(timer, "checkpoint");
+    Checkpoint::CellData cells(triangulation.n_active_cells());
+    for (const auto &cell : discretisation->dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        cells[cell->active_cell_index()] = history.pack(cell);
+    TrilinosWrappers::MPI::BlockVector increment(
+      discretisation->owned_partitioning,
+      discretisation->relevant_partitioning,
+      comm),
+      force(increment);
+    increment = last_increment;
+    force     = energy.last_force();
+    std::ostringstream all;
+    parameters.prm.print_parameters(all,
+                                    ParameterHandler::PRM |
+                                      ParameterHandler::KeepDeclarationOrder);
+    checkpoints.write(step,
+                      discretisation->dof_handler,
+                      {&u_ghosted, &increment, &force},
+                      cells,
+                      run_state(),
+                      all.str());
+  }
+
+
+
   int
   Simulation::run()
   {
     wall_start = MPI_Wtime();
     setup();
+    if (resume_from.empty())
+      start();
+    else
+      restore();
 
     const auto  &ls  = parameters.load_stepping;
     const double T   = ls.end_time;
     const double eps = 1e-12 * T;
     const auto   n_steps =
       static_cast<unsigned int>(std::ceil(T / ls.time_step - 1e-9));
-    const unsigned int interval = parameters.output.interval;
+    const unsigned int interval            = parameters.output.interval;
+    const unsigned int checkpoint_interval = parameters.checkpoint.interval;
     const ProgressLine progress(pcout, T, n_steps);
-    StepController     controller(ls);
-    double             t    = 0;
-    unsigned int       step = 0;
-
-    u            = 0;
-    old_solution = u;
-    committed    = commit({0., ls.time_step, &old_solution, &history});
-    record_step(0, 0., 0., StepReport(), 0);
-    if (interval > 0)
-      write_output(0, 0.);
-
-    // The last accepted increment and its step size, for the linear
-    // predictor.
-    TrilinosWrappers::MPI::BlockVector last_increment = u;
-    double                             last_dt        = 0.;
     while (t < T - eps)
       {
         const double dt_try = controller.next_increment(t);
@@ -472,7 +618,7 @@ namespace DuctileContact
                       << parameters.output.directory << "'." << std::endl;
                 if (Utilities::MPI::this_mpi_process(comm) == 0)
                   linear_solver->print_summary(pcout.get_stream());
-                return 2;
+                return gave_up;
               }
             continue;
           }
@@ -484,8 +630,15 @@ namespace DuctileContact
         last_dt = dt_try;
         accept_step(step_data, u_old);
         record_step(step, t, dt_try, report, controller.cutbacks());
-        if (interval > 0 && (step % interval == 0 || t >= T - eps))
+        controller.accept(dt_try, report.iterations);
+
+        const bool stop = stop_requested(comm);
+        const bool last = t >= T - eps;
+        if (interval > 0 && (step % interval == 0 || last || stop))
           write_output(step, t);
+        if (checkpoint_interval > 0 &&
+            (step % checkpoint_interval == 0 || stop))
+          write_checkpoint();
 
         StepProgress p;
         p.step              = step;
@@ -502,12 +655,24 @@ namespace DuctileContact
                 : 0;
           }
         p.min_J   = report.info.min_J;
-        p.elapsed = MPI_Wtime() - wall_start;
+        p.elapsed = earlier_wall + MPI_Wtime() - wall_start;
         progress.print(p);
-        controller.accept(dt_try, report.iterations);
+
+        if (stop && !last)
+          {
+            pcout << "Stopped by a signal after step " << step << " (t = " << t
+                  << "); results up to it are in '"
+                  << parameters.output.directory << "'"
+                  << (checkpoint_interval > 0
+                        ? ", and 'ductile-contact --resume' continues from "
+                          "its checkpoint"
+                        : " (no checkpoint: Checkpoint/Interval = 0)")
+                  << "." << std::endl;
+            return stopped;
+          }
       }
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       linear_solver->print_summary(pcout.get_stream());
-    return 0;
+    return finished;
   }
 } // namespace DuctileContact

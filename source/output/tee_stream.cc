@@ -52,9 +52,9 @@ namespace DuctileContact
 
 
   void
-  TeeStream::open_file(const std::string &file_name)
+  TeeStream::open_file(const std::string &file_name, const bool append)
   {
-    file.open(file_name);
+    file.open(file_name, append ? std::ios::app : std::ios::out);
     buffer.second = file.rdbuf();
   }
 } // namespace DuctileContact

@@ -43,6 +43,22 @@ namespace DuctileContact
                 const bool          cracking,
                 const double        contact_dissipation) const;
 
+    /// The force of the last accepted step (trapezoidal external work).
+    dealii::TrilinosWrappers::MPI::BlockVector &
+    last_force()
+    {
+      return previous_force;
+    }
+
+    /// The sums so far (checkpoints; last_force() travels on the mesh).
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &external_work &plastic_work &fracture_viscous_work
+        &history_driving_work;
+    }
+
   private:
     dealii::TrilinosWrappers::MPI::BlockVector previous_force;
     double                                     external_work         = 0.;

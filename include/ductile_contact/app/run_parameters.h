@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <ductile_contact/app/checkpoint_parameters.h>
 #include <ductile_contact/contact/contact_parameters.h>
 #include <ductile_contact/coupled/coupling_parameters.h>
 #include <ductile_contact/discretisation/boundary_condition.h>
@@ -39,6 +40,7 @@ namespace DuctileContact
     CouplingParameters                coupling;
     LinearSolverParameters            linear_solver;
     OutputParameters                  output;
+    CheckpointParameters              checkpoint;
 
     dealii::ParameterHandler prm;
 

@@ -5,8 +5,10 @@
 #include <deal.II/distributed/tria.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <ductile_contact/app/checkpoint.h>
 #include <ductile_contact/app/energy_account.h>
 #include <ductile_contact/app/run_parameters.h>
+#include <ductile_contact/app/step_controller.h>
 #include <ductile_contact/assembly/quadrature_history.h>
 #include <ductile_contact/assembly/system_assembler.h>
 #include <ductile_contact/discretisation/discretisation.h>
@@ -38,22 +40,54 @@ namespace DuctileContact
    * the output, and prints a ProgressLine.
    * Reaction forces are sums of f_int (condensed with the hanging-node
    * constraints) over the DoFs a boundary constrains.
+   *
+   * Every Checkpoint/Interval accepted steps, and when a SIGTERM or SIGINT
+   * arrived during a step, the state is written to a Checkpoint; a run
+   * constructed with a checkpoint folder continues from it.
    */
   class Simulation
   {
   public:
+    /// @p resume_from: the checkpoint folder to continue from ("": start
+    /// at t = 0).
     Simulation(const RunParameters &parameters,
                const MPI_Comm       comm,
-               TeeStream           &log);
+               TeeStream           &log,
+               const std::string   &resume_from = "");
     ~Simulation();
 
-    /// Returns 0 when the end time is reached, 2 when the run gave up.
+    /// Exit codes of run().
+    enum ExitCode : int
+    {
+      finished = 0, ///< the end time is reached
+      gave_up  = 2, ///< a step failed at the minimum step size
+      stopped  = 3  ///< stopped by SIGTERM or SIGINT after a complete step
+    };
+
+    /// Returns an ExitCode.
     int
     run();
 
   private:
     void
     setup();
+    /// The coarse mesh and, when resuming, the checkpoint's refined mesh.
+    void
+    create_mesh();
+    /// The state at t = 0, its statistics row and output.
+    void
+    start();
+    /// The state of the checkpoint resume_from.
+    void
+    restore();
+    /// Writes a checkpoint of the last accepted step.
+    void
+    write_checkpoint();
+    /// The run state that is not on the mesh, as written to state.bin.
+    std::string
+    run_state() const;
+    void
+    load_run_state(const std::string &text);
     /// The columns of the boundaries (mean displacement, force) and of
     /// the probes.
     void
@@ -96,6 +130,7 @@ namespace DuctileContact
 
     const RunParameters       &parameters;
     const MPI_Comm             comm;
+    const std::string          resume_from;
     TeeStream                 &log;
     dealii::ConditionalOStream pcout;
     dealii::ConditionalOStream verbose_out;
@@ -128,5 +163,17 @@ namespace DuctileContact
     double min_phase_field_change = 0.;
     double max_phase_field        = 0.;
     double wall_start             = 0.;
+
+    // The load-step loop.
+    StepController controller;
+    double         t    = 0.;
+    unsigned int   step = 0;
+    /// The last accepted increment and its step size (linear predictor).
+    dealii::TrilinosWrappers::MPI::BlockVector last_increment;
+    double                                     last_dt = 0.;
+    /// Wall, assembly and linear-solve time of the runs before a resume
+    /// [s], added to the statistics' timing columns.
+    double     earlier_wall = 0., earlier_assembly = 0., earlier_solve = 0.;
+    Checkpoint checkpoints;
   };
 } // namespace DuctileContact

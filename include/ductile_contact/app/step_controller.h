@@ -2,6 +2,8 @@
 
 #include <ductile_contact/solver/solver_parameters.h>
 
+#include <algorithm>
+
 namespace DuctileContact
 {
   /**
@@ -42,6 +44,17 @@ namespace DuctileContact
     increment() const
     {
       return dt;
+    }
+
+    /// The controller's state (checkpoints). A loaded increment is capped
+    /// at the current Time step (a resumed run may have lowered it).
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &dt &n_cutbacks_of_step &same_increment_steps &last_accepted_dt;
+      if (Archive::is_loading::value)
+        dt = std::min(dt, parameters.time_step);
     }
 
   private:

@@ -53,6 +53,50 @@ namespace DuctileContact
       return &data[cell->active_cell_index() * n_points];
     }
 
+    /// Doubles per point in pack().
+    static constexpr unsigned int packed_size =
+      dealii::SymmetricTensor<2, dim>::n_independent_components + 3;
+
+    /// The history of @p cell's points as one flat vector (checkpoints).
+    template <typename CellIterator>
+    std::vector<double>
+    pack(const CellIterator &cell) const
+    {
+      std::vector<double> packed;
+      packed.reserve(n_points * packed_size);
+      const PointHistory *h = (*this)(cell);
+      for (unsigned int q = 0; q < n_points; ++q)
+        {
+          for (unsigned int i = 0; i < packed_size - 3; ++i)
+            packed.push_back(h[q].plastic.Cp_inv.access_raw_entry(i));
+          packed.push_back(h[q].plastic.alpha);
+          packed.push_back(h[q].plastic.r);
+          packed.push_back(h[q].driving_energy_max);
+        }
+      return packed;
+    }
+
+    /// Sets the history of @p cell from pack()'s vector; false if its size
+    /// does not fit.
+    template <typename CellIterator>
+    bool
+    unpack(const CellIterator &cell, const std::vector<double> &packed)
+    {
+      if (packed.size() != n_points * packed_size)
+        return false;
+      PointHistory *h = (*this)(cell);
+      auto          p = packed.begin();
+      for (unsigned int q = 0; q < n_points; ++q)
+        {
+          for (unsigned int i = 0; i < packed_size - 3; ++i)
+            h[q].plastic.Cp_inv.access_raw_entry(i) = *p++;
+          h[q].plastic.alpha      = *p++;
+          h[q].plastic.r          = *p++;
+          h[q].driving_energy_max = *p++;
+        }
+      return true;
+    }
+
   private:
     unsigned int              n_points = 0;
     std::vector<PointHistory> data;

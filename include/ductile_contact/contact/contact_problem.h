@@ -171,6 +171,25 @@ namespace DuctileContact
     void
     add_columns(Statistics &statistics) const;
 
+    /// The committed state of every pair (multipliers, tangential
+    /// tractions, node positions, dissipation) for a checkpoint: per node a
+    /// record that starts with its reference position, since the node
+    /// order depends on the partition.
+    std::vector<double>
+    committed_state() const;
+
+    /// Restores committed_state() after setup(); throws InputError when
+    /// the surfaces do not match the records.
+    void
+    restore_committed_state(const std::vector<double> &state);
+
+    /// The series of the contact output files (checkpoints).
+    std::vector<std::vector<std::pair<double, std::string>>> &
+    output_series()
+    {
+      return output_records;
+    }
+
     const std::deque<ContactPairParameters> &pairs;
 
   private:

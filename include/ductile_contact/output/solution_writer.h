@@ -8,6 +8,9 @@
 #include <ductile_contact/materials/body_parameters.h>
 #include <ductile_contact/output/output_parameters.h>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 #include <map>
 #include <string>
 #include <utility>
@@ -48,6 +51,14 @@ namespace DuctileContact
     /// The mesh has changed since the last output: hdf5 writes it again.
     void
     mesh_changed();
+
+    /// The series written so far (checkpoints).
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &records &xdmf_entries &mesh_file;
+    }
 
   private:
     const std::string     directory;

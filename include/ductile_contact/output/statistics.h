@@ -27,6 +27,14 @@ namespace DuctileContact
     void
     write() const;
 
+    /// The table so far (checkpoints).
+    template <class Archive>
+    void
+    serialize(Archive &ar, const unsigned int)
+    {
+      ar &table;
+    }
+
   private:
     std::string          file_name;
     dealii::TableHandler table;

@@ -18,8 +18,9 @@ namespace DuctileContact
   public:
     explicit TeeStream(std::ostream &screen);
 
+    /// @p append: continue the file (a resumed run) instead of replacing it.
     void
-    open_file(const std::string &file_name);
+    open_file(const std::string &file_name, const bool append = false);
 
   private:
     class Buffer : public std::streambuf
