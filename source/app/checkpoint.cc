@@ -42,7 +42,8 @@ namespace DuctileContact
     void
     test_kill_hook(const unsigned int step, const MPI_Comm comm)
     {
-      const char *value = std::getenv("DUCTILE_CONTACT_TEST_KILL_IN_CHECKPOINT");
+      const char *value =
+        std::getenv("DUCTILE_CONTACT_TEST_KILL_IN_CHECKPOINT");
       if (value != nullptr && std::atoi(value) == static_cast<int>(step) &&
           Utilities::MPI::this_mpi_process(comm) == 0)
         std::raise(SIGKILL);
@@ -73,12 +74,12 @@ namespace DuctileContact
 
 
   void
-  Checkpoint::write(const unsigned int              step,
-                    const DoFHandler<dim>          &dof_handler,
+  Checkpoint::write(const unsigned int                      step,
+                    const DoFHandler<dim>                  &dof_handler,
                     const std::vector<const BlockVector *> &ghosted,
-                    const CellData                 &cell_data,
-                    const std::string              &state,
-                    const std::string              &parameters) const
+                    const CellData                         &cell_data,
+                    const std::string                      &state,
+                    const std::string                      &parameters) const
   {
     const bool        root_rank = Utilities::MPI::this_mpi_process(comm) == 0;
     const std::string writing   = root + "/.writing";
@@ -150,7 +151,8 @@ namespace DuctileContact
       {
         std::ifstream marker(root + "/last");
         std::string   name;
-        if (marker >> name && fs::is_regular_file(root + "/" + name + "/state.bin"))
+        if (marker >> name &&
+            fs::is_regular_file(root + "/" + name + "/state.bin"))
           folder = root + "/" + name;
       }
     return Utilities::MPI::broadcast(comm, folder, 0);
@@ -242,9 +244,13 @@ namespace DuctileContact
     bool
     invalidates(const std::string &entry)
     {
-      for (const char *prefix :
-           {"Mesh/", "Finite elements/", "Bodies/", "Body ",
-            "Boundary conditions/", "Contact/", "Contact pair "})
+      for (const char *prefix : {"Mesh/",
+                                 "Finite elements/",
+                                 "Bodies/",
+                                 "Body ",
+                                 "Boundary conditions/",
+                                 "Contact/",
+                                 "Contact pair "})
         if (entry.rfind(prefix, 0) == 0)
           return true;
       return false;
@@ -265,7 +271,7 @@ namespace DuctileContact
     std::vector<std::string> accepted;
     for (const std::string &name : names)
       {
-        const auto   o = old_entries.find(name), n = new_entries.find(name);
+        const auto o = old_entries.find(name), n = new_entries.find(name);
         const std::string old_value =
           o == old_entries.end() ? "(not there)" : o->second;
         const std::string new_value =

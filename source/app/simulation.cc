@@ -605,8 +605,8 @@ namespace DuctileContact
           {
             u                = u_old;
             const bool go_on = controller.reject(dt_try);
-            pcout << "  step at t = " << t + dt_try << " failed ("
-                  << report.failure
+            pcout << "  step " << step + 1 << " at t = " << t + dt_try
+                  << " failed (" << report.failure
                   << "); cutting back to dt = " << controller.increment()
                   << std::endl;
             if (!go_on)

@@ -31,7 +31,16 @@ namespace DuctileContact
         magnitude_squared[b] += o.magnitude_squared[b];
         scale_squared[b] += o.scale_squared[b];
       }
-    min_J     = std::min(min_J, o.min_J);
+    if (o.min_J < min_J)
+      {
+        min_J      = o.min_J;
+        min_J_site = o.min_J_site;
+      }
+    if (o.non_finite && !non_finite)
+      {
+        non_finite      = true;
+        non_finite_site = o.non_finite_site;
+      }
     max_alpha = std::max(max_alpha, o.max_alpha);
     min_yielding_alpha_increment =
       std::min(min_yielding_alpha_increment, o.min_yielding_alpha_increment);
@@ -45,8 +54,30 @@ namespace DuctileContact
   AssemblyReduction::sum_over_ranks(const MPI_Comm comm) const
   {
     AssemblyInfo info;
-    info.inverted  = Utilities::MPI::max(inverted ? 1 : 0, comm) > 0;
-    info.min_J     = Utilities::MPI::min(min_J, comm);
+    info.inverted = Utilities::MPI::max(inverted ? 1 : 0, comm) > 0;
+    // The site of the smallest J and of the first non-finite row, from the
+    // rank that has it.
+    const auto min_J_rank = Utilities::MPI::min_max_avg(min_J, comm).min_index;
+    info.min_J            = Utilities::MPI::min(min_J, comm);
+    info.min_J_site.position =
+      Utilities::MPI::broadcast(comm, min_J_site.position, min_J_rank);
+    info.min_J_site.body =
+      Utilities::MPI::broadcast(comm, min_J_site.body, min_J_rank);
+    const unsigned int this_rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int first_non_finite = Utilities::MPI::min(
+      non_finite ? this_rank : numbers::invalid_unsigned_int, comm);
+    info.non_finite = first_non_finite != numbers::invalid_unsigned_int;
+    if (info.non_finite)
+      {
+        info.non_finite_site.position =
+          Utilities::MPI::broadcast(comm,
+                                    non_finite_site.position,
+                                    first_non_finite);
+        info.non_finite_site.body =
+          Utilities::MPI::broadcast(comm,
+                                    non_finite_site.body,
+                                    first_non_finite);
+      }
     info.max_alpha = Utilities::MPI::max(max_alpha, comm);
     info.min_yielding_alpha_increment =
       Utilities::MPI::min(min_yielding_alpha_increment, comm);
@@ -389,12 +420,10 @@ namespace DuctileContact
         const Tensor<2, dim> F =
           Physics::Elasticity::StandardTensors<dim>::I + scratch.grad_u[q];
         const double J = determinant(F);
-        sums.min_J     = std::min(sums.min_J, J);
+        if (!(J >= sums.min_J))
+          sums.note_J(J, {cell->center(), cell->material_id()});
         if (!(J > 0.))
-          {
-            sums.inverted = true;
-            continue;
-          }
+          continue;
         const MaterialResponse m =
           point_response(body, F, q, index, fields, scratch, pass, sums);
         const double JxW = fe_values.JxW(q);
@@ -515,6 +544,14 @@ namespace DuctileContact
     for (unsigned int i = 0; i < rows.rhs.size(); ++i)
       rows.rhs(i) = -rows.f_int(i);
     add_traction_rows(cell, scratch, pass.step->t, dofs, rows);
+    if (!copy.sums.non_finite)
+      for (unsigned int i = 0; i < rows.rhs.size(); ++i)
+        if (!std::isfinite(rows.rhs(i)))
+          {
+            copy.sums.non_finite      = true;
+            copy.sums.non_finite_site = {cell->center(), cell->material_id()};
+            break;
+          }
     if (has_s)
       face_terms(cell, scratch, copy, pass);
   }

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 namespace DuctileContact
 {
@@ -173,5 +174,25 @@ namespace DuctileContact
     else
       WorkStream::run(begin, end, worker, copier, *scratch, CellCopy());
     return sums.sum_over_ranks(dof_handler.get_communicator());
+  }
+  std::string
+  SystemAssembler::fault(const AssemblyInfo &info) const
+  {
+    const auto where = [&](const FaultSite &site) {
+      std::ostringstream s;
+      s << "in the cell at (" << site.position << ") m of body " << site.body;
+      const auto body = bodies.find(site.body);
+      if (body != bodies.end())
+        s << " '" << body->second->name << "'";
+      return s.str();
+    };
+    std::ostringstream s;
+    if (info.non_finite)
+      s << "the residual is not finite (NaN or Inf) "
+        << where(info.non_finite_site);
+    else if (info.inverted)
+      s << "an element inverts (J = " << info.min_J << " "
+        << where(info.min_J_site) << ")";
+    return s.str();
   }
 } // namespace DuctileContact

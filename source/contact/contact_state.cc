@@ -12,7 +12,7 @@ namespace DuctileContact
 
   namespace
   {
-    constexpr unsigned int slave_record = 2 * dim + 1 + dim;
+    constexpr unsigned int slave_record  = 2 * dim + 1 + dim;
     constexpr unsigned int master_record = 2 * dim;
 
     /// Finds the nodes of @p surface by reference position, within
@@ -105,7 +105,7 @@ namespace DuctileContact
                         "contact surfaces of this run (" +
                         what + ")");
     };
-    std::size_t pos = 0;
+    std::size_t pos  = 0;
     const auto  take = [&](const std::size_t n) {
       if (pos + n > state.size())
         throw mismatch("the record ends early");

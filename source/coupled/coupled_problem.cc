@@ -196,14 +196,14 @@ namespace DuctileContact
   bool
   CoupledProblem::begin_iteration(const Vector &x)
   {
-    u_ghosted = x;
-    make_newton_constraints(discretisation,
-                            boundary_conditions,
-                            step.t,
-                            &u_ghosted,
-                            constraints,
-                            frozen);
-    double largest = 0;
+    u_ghosted        = x;
+    prescribed_fault = make_newton_constraints(discretisation,
+                                               boundary_conditions,
+                                               step.t,
+                                               &u_ghosted,
+                                               constraints,
+                                               frozen);
+    double largest   = 0;
     for (const auto &line : constraints.get_lines())
       largest = std::max(largest, std::abs(line.inhomogeneity));
     return Utilities::MPI::max(largest,
@@ -255,8 +255,10 @@ namespace DuctileContact
       e.round_off.push_back(frozen[b] ? 0.
                                       : std::numeric_limits<double>::epsilon() *
                                           info.residual_magnitude[b]);
-    e.admissible     = !info.inverted;
-    e.inadmissible   = "inverts an element";
+    e.admissible =
+      !info.inverted && !info.non_finite && prescribed_fault.empty();
+    e.inadmissible =
+      !prescribed_fault.empty() ? prescribed_fault : assembler.fault(info);
     e.branch_changes = info.switch_flips;
     return e;
   }

@@ -1,6 +1,10 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ductile_contact/discretisation/constraints.h>
+
+#include <cmath>
+#include <sstream>
 
 namespace DuctileContact
 {
@@ -8,22 +12,40 @@ namespace DuctileContact
 
   namespace
   {
+    /// The prescribed values at time @p t; @p fault names the first
+    /// boundary condition with a value that is not finite.
     std::map<types::global_dof_index, double>
     dirichlet_values(const Discretisation                &discretisation,
                      const std::deque<BoundaryCondition> &boundary_conditions,
-                     const double                         t)
+                     const double                         t,
+                     std::string                         &fault)
     {
       std::map<types::global_dof_index, double> values;
       for (const BoundaryCondition &bc : boundary_conditions)
         if (bc.has_dirichlet())
           {
             bc.displacement->set_time(t);
+            std::map<types::global_dof_index, double> these;
             VectorTools::interpolate_boundary_values(discretisation.mapping,
                                                      discretisation.dof_handler,
                                                      {{bc.boundary_id,
                                                        bc.displacement.get()}},
-                                                     values,
+                                                     these,
                                                      bc.dirichlet_mask());
+            for (auto &[dof, value] : these)
+              if (!std::isfinite(value))
+                {
+                  if (fault.empty())
+                    {
+                      std::ostringstream s;
+                      s << "the prescribed displacement of '" << bc.subsection()
+                        << "' is " << (std::isnan(value) ? "NaN" : "Inf")
+                        << " at t = " << t;
+                      fault = s.str();
+                    }
+                  value = 0.;
+                }
+            values.insert(these.begin(), these.end());
           }
       return values;
     }
@@ -31,7 +53,7 @@ namespace DuctileContact
 
 
 
-  void
+  std::string
   make_newton_constraints(
     const Discretisation                     &discretisation,
     const std::deque<BoundaryCondition>      &boundary_conditions,
@@ -44,12 +66,14 @@ namespace DuctileContact
     constraints.reinit(discretisation.locally_relevant_dofs);
     constraints.merge(discretisation.hanging_node_constraints);
 
-    for (const auto &[dof, value] :
-         dirichlet_values(discretisation, boundary_conditions, t))
+    std::string fault;
+    const auto  values =
+      dirichlet_values(discretisation, boundary_conditions, t, fault);
+    for (const auto &[dof, value] : values)
       if (!constraints.is_constrained(dof))
         {
           constraints.add_line(dof);
-          if (u != nullptr)
+          if (u != nullptr && fault.empty())
             constraints.set_inhomogeneity(dof, value - (*u)(dof));
         }
 
@@ -64,5 +88,15 @@ namespace DuctileContact
               constraints.add_line(offset + i);
         }
     constraints.close();
+    // Every rank knows: the DoFs with the fault may be on one only.
+    const MPI_Comm     comm = discretisation.dof_handler.get_communicator();
+    const unsigned int first =
+      Utilities::MPI::min(fault.empty()
+                            ? numbers::invalid_unsigned_int
+                            : Utilities::MPI::this_mpi_process(comm),
+                          comm);
+    return first == numbers::invalid_unsigned_int
+             ? std::string()
+             : Utilities::MPI::broadcast(comm, fault, first);
   }
 } // namespace DuctileContact

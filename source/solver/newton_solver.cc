@@ -238,6 +238,11 @@ namespace DuctileContact
         report.iterations = it;
         if (it == 0 || branches_changed)
           print(problem, it, evaluation, pending);
+        if (!evaluation.admissible)
+          {
+            report.failure = evaluation.inadmissible;
+            return report;
+          }
         if (!std::isfinite(r))
           {
             report.failure = "residual is not finite";
@@ -274,7 +279,9 @@ namespace DuctileContact
         ResidualEvaluation trial;
         if (!line_search(problem, x, n, tol, pending, step_length, trial))
           {
-            report.failure = "line search found no admissible step";
+            report.failure =
+              "line search found no admissible step" +
+              (trial.admissible ? std::string() : ": " + trial.inadmissible);
             return report;
           }
         monitor.out << "        linear iterations " << n_linear

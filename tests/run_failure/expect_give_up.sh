@@ -15,7 +15,7 @@ echo "$out"
 fail() { echo "FAIL: $*"; exit 1; }
 [[ $code -eq 2 ]] || fail "exit code $code, expected 2"
 [[ $(grep -c "Minimum time step' = 0.5" <<<"$out") -eq 1 ]] || fail "no single give-up message"
-grep -q "step at t = 1 failed" <<<"$out" || fail "the failed step is not reported"
+grep -q "step 1 at t = 1 failed" <<<"$out" || fail "the failed step is not reported"
 [[ -s give_up_results/statistics ]] || fail "statistics missing"
 head -n 1 give_up_results/statistics | grep -q "F5_z" || fail "statistics header missing"
 [[ $(wc -l < give_up_results/statistics) -eq 2 ]] || fail "statistics must hold the header and step 0"

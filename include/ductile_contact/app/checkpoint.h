@@ -61,8 +61,8 @@ namespace DuctileContact
     /// and @p parameters: the contents of state.bin and parameters.prm
     /// (used on rank 0).
     void
-    write(const unsigned int                                              step,
-          const dealii::DoFHandler<dim>                                  &dof_handler,
+    write(const unsigned int             step,
+          const dealii::DoFHandler<dim> &dof_handler,
           const std::vector<const dealii::TrilinosWrappers::MPI::BlockVector *>
                             &ghosted,
           const CellData    &cell_data,
@@ -82,15 +82,16 @@ namespace DuctileContact
     /// Loads the refined mesh of @p folder onto @p tria, which holds the
     /// coarse mesh the checkpoint was made on.
     static void
-    load_mesh(const std::string                               &folder,
+    load_mesh(const std::string                                 &folder,
               dealii::parallel::distributed::Triangulation<dim> &tria);
 
     /// Restores the vectors (without ghosts, in the order written) and
     /// the cell data, after load_mesh() and the DoF distribution.
     static void
-    load_data(const dealii::DoFHandler<dim>                             &dof_handler,
-              const std::vector<dealii::TrilinosWrappers::MPI::BlockVector *> &owned,
-              CellData &cell_data);
+    load_data(
+      const dealii::DoFHandler<dim> &dof_handler,
+      const std::vector<dealii::TrilinosWrappers::MPI::BlockVector *> &owned,
+      CellData &cell_data);
 
     /// The folder name of step @p step.
     static std::string

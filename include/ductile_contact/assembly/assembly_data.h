@@ -9,11 +9,20 @@
 #include <ductile_contact/core/types.h>
 
 #include <array>
+#include <cmath>
 #include <limits>
 #include <vector>
 
 namespace DuctileContact
 {
+  /// Where an assembly met a numerical fault: a reference position and
+  /// the body (material id) there.
+  struct FaultSite
+  {
+    dealii::Point<dim> position;
+    unsigned int       body = 0;
+  };
+
   /// What one assembly pass found (all values summed over MPI ranks).
   struct AssemblyInfo
   {
@@ -21,6 +30,12 @@ namespace DuctileContact
     /// is not admissible and nothing else here is meaningful.
     bool   inverted = false;
     double min_J    = 1.;
+    /// The cell (centre) with the smallest J.
+    FaultSite min_J_site;
+    /// A cell's residual rows are not finite (NaN or Inf), first at
+    /// non_finite_site (a cell centre): the state is not admissible.
+    bool      non_finite = false;
+    FaultSite non_finite_site;
     /// int Psi^e dV over the reference configuration [J] (degraded).
     double stored_energy = 0.;
     /// int (int_0^alpha yhat da + y_0 l_p^2/2 |grad alpha|^2) dV [J], (20).
@@ -91,11 +106,24 @@ namespace DuctileContact
     /// scale of u is its magnitude).
     std::array<double, Block::n_blocks> magnitude_squared{{0., 0., 0.}};
     std::array<double, Block::n_blocks> scale_squared{{0., 0., 0.}};
-    double min_J                        = std::numeric_limits<double>::max();
-    double max_alpha                    = 0.;
-    double min_yielding_alpha_increment = std::numeric_limits<double>::max();
-    bool   inverted                     = false;
-    unsigned int switch_flips           = 0;
+    double    min_J = std::numeric_limits<double>::max();
+    FaultSite min_J_site;
+    double    max_alpha                    = 0.;
+    double    min_yielding_alpha_increment = std::numeric_limits<double>::max();
+    bool      inverted                     = false;
+    bool      non_finite                   = false;
+    FaultSite non_finite_site;
+    unsigned int switch_flips = 0;
+
+    /// Notes a value J below min_J (or not finite) at @p site.
+    void
+    note_J(const double J, const FaultSite &site)
+    {
+      min_J      = std::isfinite(J) ? J : -std::numeric_limits<double>::max();
+      min_J_site = site;
+      if (!(J > 0.))
+        inverted = true;
+    }
 
     void
     add(const AssemblyReduction &other);

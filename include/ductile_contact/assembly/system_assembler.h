@@ -72,6 +72,12 @@ namespace DuctileContact
            const StepData                                   &step,
            QuadratureHistory                                &updated) const;
 
+    /// Why the state of @p info is not admissible, with where it happens
+    /// ("" when it is): an inverted element (J <= 0) or a non-finite
+    /// residual, the cell's position and its body.
+    std::string
+    fault(const AssemblyInfo &info) const;
+
     /// Cell averages of @p u for the output.
     void
     cell_averages(const dealii::TrilinosWrappers::MPI::BlockVector &u,

@@ -154,7 +154,10 @@ namespace DuctileContact
     void
     apply_bound(const Vector &x);
 
-    const Discretisation                &discretisation;
+    const Discretisation &discretisation;
+    /// Why the prescribed values of the current iterate are unusable ("":
+    /// they are finite).
+    std::string                          prescribed_fault;
     const SystemAssembler               &assembler;
     const std::deque<BoundaryCondition> &boundary_conditions;
     const CouplingParameters            &coupling;

@@ -19,8 +19,11 @@ namespace DuctileContact
    * pattern). The DoFs of every block marked in @p frozen keep their
    * values (homogeneous lines): the staggered scheme solves one group of
    * fields with the others fixed.
+   * Returns "" or, when a prescribed value is not finite (an expression
+   * that is NaN or Inf at @p t), which boundary condition gives it; its
+   * DoFs are then held (homogeneous lines).
    */
-  void
+  std::string
   make_newton_constraints(
     const Discretisation                             &discretisation,
     const std::deque<BoundaryCondition>              &boundary_conditions,

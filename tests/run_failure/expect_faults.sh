@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Usage: expect_faults.sh MPIEXEC NP EXECUTABLE (run in a scratch folder)
+# Issue #26 item 5: numerical faults are caught where they happen and
+# named; the step is cut back; when the fault persists down to the minimum
+# step the run stops with exit code 2 and readable results:
+#  - inverted.prm: an inverted element (J <= 0), named with J, the cell's
+#    position and the body;
+#  - nan_displacement.prm: a prescribed displacement that is NaN, named
+#    with the boundary condition and the time;
+#  - nan_traction.prm: a residual that is not finite (a NaN traction),
+#    named with the cell's position and the body.
+set -u
+mpiexec=$1 np=$2 exe=$3
+here=$(cd "$(dirname "$0")" && pwd)
+if [[ $(id -u) -eq 0 ]]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+fi
+fail() { echo "FAIL: $*"; exit 1; }
+expect() { # NAME "MESSAGE" ...: exit code 2, each message, results readable
+  local name=$1
+  shift
+  rm -rf "${name}_results"
+  local out code
+  out=$("$mpiexec" -np "$np" "$exe" "$here/$name.prm" 2>&1)
+  code=$?
+  echo "$out" | grep "failed\|Error"
+  [[ $code -eq 2 ]] || fail "$name: exit code $code, expected 2"
+  for message in "$@"; do
+    grep -qF -- "$message" <<< "$out" || fail "$name: no '$message'"
+  done
+  [[ $(grep -c "Minimum time step" <<< "$out") -eq 1 ]] ||
+    fail "$name: no single give-up message"
+  head -n 1 "${name}_results/statistics" | grep -q "F5_z" ||
+    fail "$name: statistics unreadable"
+  python3 - "${name}_results/statistics" <<'EOT' ||
+import math, sys
+rows = [line.split() for line in open(sys.argv[1]) if line.strip()]
+sys.exit(any(not math.isfinite(float(v)) for row in rows[1:]
+             for h, v in zip(rows[0], row) if h != "newton_rate"))
+EOT
+    fail "$name: NaN or Inf in the statistics (newton_rate may be nan)"
+  return 0
+}
+expect inverted "step 1 at t = 1 failed" "an element inverts (J = -" \
+  "in the cell at (0.5 0.5 0.5) m of body 0 'body'"
+expect nan_displacement "step 4 at t = 0.4 failed" \
+  "the prescribed displacement of 'Boundary 5' is NaN at t = 0.4)"
+expect nan_traction "step 4 at t = 0.4 failed" \
+  "the residual is not finite (NaN or Inf) in the cell at (0.5 0.5 0.5) m of body 0 'body'"
+echo PASS
