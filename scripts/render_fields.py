@@ -3,14 +3,15 @@
 coloured by chosen fields, one PNG per field (no ParaView needed).
 
 Usage: scripts/render_fields.py RESULTS [FIELD ...] [--body ID] [--warp F]
-                                [--step N] [--out-prefix PATH]
+                                [--step N] [--out PREFIX]
   RESULTS  a results directory holding solution.pvd (or the .pvd itself)
   FIELD    point-data arrays of the .pvtu (default: s alpha)
   --body   colour only the body with this material id (default 0); the other
            bodies are drawn in light grey
   --warp   displacement magnification (default 1: the true deformed shape)
   --step   the output step to draw (default: the last one in the .pvd)
-Writes RESULTS/FIELD.png. Needs python3-vtk9 and a display: under a headless
+  --out    where to write: PREFIX + FIELD + .png (default: RESULTS/)
+Writes RESULTS/FIELD.png (or PREFIX + FIELD.png). Needs python3-vtk9 and a display: under a headless
 shell, run it through xvfb-run (scripts/run.sh does).
 """
 import argparse
@@ -148,6 +149,7 @@ def main():
     parser.add_argument("--body", type=int, default=0)
     parser.add_argument("--warp", type=float, default=1.0)
     parser.add_argument("--step", type=int, default=None)
+    parser.add_argument("--out", default=None)
     args = parser.parse_args()
     pvd = args.results if args.results.endswith(".pvd") else os.path.join(
         args.results, "solution.pvd")
@@ -159,6 +161,7 @@ def main():
     reader.Update()
     for field in args.fields:
         render(reader, field, args, time,
+               (args.out + field + ".png") if args.out else
                os.path.join(os.path.dirname(pvd), field + ".png"))
 
 

@@ -345,16 +345,26 @@ namespace DuctileContact
     statistics.add("linear_iterations", report.linear_iterations);
     statistics.add("cutbacks", cutbacks);
     // Cumulative wall time of the phases, for work-precision studies.
+    const Times times = cumulative_times();
+    statistics.add("assembly_time", times.assembly);
+    statistics.add("solve_time", times.solve);
+    statistics.add("wall_time", times.wall);
+  }
+
+
+
+  Simulation::Times
+  Simulation::cumulative_times() const
+  {
     const auto sections = timer.get_summary_data(TimerOutput::total_wall_time);
     const auto seconds  = [&](const std::string &name) {
       const auto it = sections.find(name);
       return it == sections.end() ? 0. : it->second;
     };
-    statistics.add("assembly_time",
-                   earlier_assembly + seconds("assembly") +
-                     seconds("assembly (line search)"));
-    statistics.add("solve_time", earlier_solve + seconds("linear solve"));
-    statistics.add("wall_time", earlier_wall + MPI_Wtime() - wall_start);
+    return {earlier.wall + MPI_Wtime() - wall_start,
+            earlier.assembly + seconds("assembly") +
+              seconds("assembly (line search)"),
+            earlier.solve + seconds("linear solve")};
   }
 
 
@@ -466,20 +476,11 @@ namespace DuctileContact
   std::string
   Simulation::run_state() const
   {
-    const auto sections = timer.get_summary_data(TimerOutput::total_wall_time);
-    const auto seconds  = [&](const std::string &name) {
-      const auto it = sections.find(name);
-      return it == sections.end() ? 0. : it->second;
-    };
-    const double wall     = earlier_wall + MPI_Wtime() - wall_start;
-    const double assembly = earlier_assembly + seconds("assembly") +
-                            seconds("assembly (line search)");
-    const double solve = earlier_solve + seconds("linear solve");
-
+    const Times                     times = cumulative_times();
     std::ostringstream              text;
     boost::archive::binary_oarchive ar(text);
-    ar << step << t << last_dt << wall << assembly << solve << controller
-       << energy << statistics << *writer;
+    ar << step << t << last_dt << times.wall << times.assembly << times.solve
+       << controller << energy << statistics << *writer;
     std::vector<double>                                      contact_state;
     std::vector<std::vector<std::pair<double, std::string>>> contact_series;
     if (contact)
@@ -498,8 +499,8 @@ namespace DuctileContact
   {
     std::istringstream              in(text);
     boost::archive::binary_iarchive ar(in);
-    ar >> step >> t >> last_dt >> earlier_wall >> earlier_assembly >>
-      earlier_solve >> controller >> energy >> statistics >> *writer;
+    ar >> step >> t >> last_dt >> earlier.wall >> earlier.assembly >>
+      earlier.solve >> controller >> energy >> statistics >> *writer;
     std::vector<double>                                      contact_state;
     std::vector<std::vector<std::pair<double, std::string>>> contact_series;
     ar >> contact_state >> contact_series;
@@ -655,7 +656,7 @@ namespace DuctileContact
                 : 0;
           }
         p.min_J   = report.info.min_J;
-        p.elapsed = earlier_wall + MPI_Wtime() - wall_start;
+        p.elapsed = earlier.wall + MPI_Wtime() - wall_start;
         progress.print(p);
 
         if (stop && !last)

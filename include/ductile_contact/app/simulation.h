@@ -171,9 +171,16 @@ namespace DuctileContact
     /// The last accepted increment and its step size (linear predictor).
     dealii::TrilinosWrappers::MPI::BlockVector last_increment;
     double                                     last_dt = 0.;
-    /// Wall, assembly and linear-solve time of the runs before a resume
-    /// [s], added to the statistics' timing columns.
-    double     earlier_wall = 0., earlier_assembly = 0., earlier_solve = 0.;
+    /// Wall, assembly and linear-solve time [s].
+    struct Times
+    {
+      double wall = 0., assembly = 0., solve = 0.;
+    };
+    /// Those of the runs before a resume, added to this run's.
+    Times earlier;
+    /// The statistics' timing columns: this run's times plus earlier.
+    Times
+               cumulative_times() const;
     Checkpoint checkpoints;
   };
 } // namespace DuctileContact
