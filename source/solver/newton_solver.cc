@@ -1,6 +1,9 @@
+#include <deal.II/lac/solver_control.h>
+
 #include <ductile_contact/solver/newton_solver.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -8,6 +11,23 @@
 
 namespace DuctileContact
 {
+  namespace
+  {
+    /// An exception's message on one line: deal.II's carry a banner and
+    /// line breaks; the screen line of a failed step has room for one.
+    std::string
+    one_line(const std::string &text)
+    {
+      std::string out;
+      for (const char c : text)
+        if (!std::isspace(static_cast<unsigned char>(c)))
+          out += c;
+        else if (!out.empty() && out.back() != ' ')
+          out += ' ';
+      return out;
+    }
+  } // namespace
+
   using namespace dealii;
 
   NewtonSolver::NewtonSolver(const NewtonParameters &parameters,
@@ -265,13 +285,28 @@ namespace DuctileContact
                                            delta,
                                            problem.system_rhs());
           }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            std::ostringstream s;
+            s << "the iterative linear solver did not converge in "
+              << e.last_step << " iterations (residual " << e.last_residual
+              << ")";
+            report.failure = s.str();
+            return report;
+          }
         catch (const std::exception &e)
           {
-            report.failure = std::string("linear solver failed: ") + e.what();
+            report.failure = "the linear solver failed: " + one_line(e.what());
             return report;
           }
         problem.distribute(delta);
         report.linear_iterations += n_linear;
+        if (!std::isfinite(delta.l2_norm()))
+          {
+            report.failure = "the linear solve returned an update that is not "
+                             "finite (NaN or Inf)";
+            return report;
+          }
         if (parameters.check_tangent && !pending)
           report.tangent_error = tangent_error(problem, x);
 

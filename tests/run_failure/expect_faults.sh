@@ -8,7 +8,11 @@
 #  - nan_displacement.prm: a prescribed displacement that is NaN, named
 #    with the boundary condition and the time;
 #  - nan_traction.prm: a residual that is not finite (a NaN traction),
-#    named with the cell's position and the body.
+#    named with the cell's position and the body;
+#  - linear_failure.prm: a failed linear solve (GMRES limited to one
+#    iteration), named with the iterations and the residual reached.
+# (A linear solve that returns NaN or Inf is also caught, "the linear solve
+# returned an update that is not finite"; no input provokes it reliably.)
 set -u
 mpiexec=$1 np=$2 exe=$3
 here=$(cd "$(dirname "$0")" && pwd)
@@ -47,4 +51,6 @@ expect nan_displacement "step 4 at t = 0.4 failed" \
   "the prescribed displacement of 'Boundary 5' is NaN at t = 0.4)"
 expect nan_traction "step 4 at t = 0.4 failed" \
   "the residual is not finite (NaN or Inf) in the cell at (0.5 0.5 0.5) m of body 0 'body'"
+expect linear_failure "step 1 at t = 1 failed" \
+  "the iterative linear solver did not converge in 1 iterations (residual"
 echo PASS
