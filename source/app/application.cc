@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
 
 #include <ductile_contact/app/application.h>
 #include <ductile_contact/app/checkpoint.h>
@@ -11,9 +12,12 @@
 #include <ductile_contact/output/tee_stream.h>
 
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 namespace DuctileContact
@@ -60,6 +64,130 @@ namespace DuctileContact
             out.erase(close, 1);
         }
       return Utilities::trim(out);
+    }
+
+
+
+    /// Throws InputError when a boundary condition's expression is not
+    /// finite at a vertex or face centre of its boundary (coarse mesh) at
+    /// t = 0 or at the end time.
+    void
+    check_boundary_expressions(const RunParameters      &parameters,
+                               const Triangulation<dim> &tria)
+    {
+      const double end = parameters.load_stepping.end_time;
+      for (const BoundaryCondition &bc : parameters.boundary_conditions)
+        for (const auto &cell : tria.cell_iterators_on_level(0))
+          for (const unsigned int f : cell->face_indices())
+            {
+              const auto face = cell->face(f);
+              if (!face->at_boundary() || face->boundary_id() != bc.boundary_id)
+                continue;
+              std::vector<Point<dim>> points{face->center()};
+              for (const unsigned int v : face->vertex_indices())
+                points.push_back(face->vertex(v));
+              for (const auto &[name, function] :
+                   {std::pair{"Displacement", bc.displacement.get()},
+                    std::pair{"Traction", bc.traction.get()}})
+                {
+                  if (function == nullptr)
+                    continue;
+                  Vector<double> values(function->n_components);
+                  for (const double t : {0., end})
+                    for (const Point<dim> &p : points)
+                      {
+                        function->set_time(t);
+                        function->vector_value(p, values);
+                        for (unsigned int d = 0; d < dim; ++d)
+                          if (!std::isfinite(values[d]))
+                            {
+                              std::ostringstream where;
+                              where << "it must be finite on the boundary at "
+                                       "t = 0 and at the end time; it is "
+                                    << (std::isnan(values[d]) ? "NaN"
+                                        : values[d] > 0       ? "Inf"
+                                                              : "-Inf")
+                                    << " at (" << p << ") at t = " << t;
+                              function->set_time(0.);
+                              throw InputError(bc.subsection() + "/" + name,
+                                               name == std::string("Traction")
+                                                 ? bc.traction_text
+                                                 : bc.displacement_text,
+                                               where.str());
+                            }
+                      }
+                  function->set_time(0.);
+                }
+            }
+    }
+
+
+
+    /// Throws InputError when the mesh after the global refinements cannot
+    /// fit into the memory of the hosts of this run: a lower bound, the
+    /// tangent matrix alone (FE_Q(p): (2p + 1)^3 nodes couple with a node,
+    /// 12 bytes per entry), against MemTotal summed over the hosts.
+    void
+    check_memory(const RunParameters                             &parameters,
+                 const parallel::distributed::Triangulation<dim> &coarse)
+    {
+      const MPI_Comm comm    = coarse.get_communicator();
+      bool           plastic = false, cracking = false;
+      for (const BodyParameters &b : parameters.bodies)
+        {
+          plastic  = plastic || b.plasticity;
+          cracking = cracking || b.fracture;
+        }
+      const double components = dim + (plastic ? 1 : 0) + (cracking ? 1 : 0);
+      const double p          = parameters.fe_degree;
+      const double cells      = coarse.n_global_active_cells() *
+                           std::pow(8., parameters.mesh.global_refinements);
+      const double unknowns = cells * p * p * p * components;
+      const double bytes =
+        unknowns * std::pow(2. * p + 1., 3) * components * 12.;
+
+      // MemTotal of each host, counted once.
+      double      host_memory = 0.;
+      std::string host;
+      {
+        std::ifstream meminfo("/proc/meminfo");
+        std::string   key;
+        double        kb = 0.;
+        while (meminfo >> key >> kb)
+          {
+            if (key == "MemTotal:")
+              {
+                host_memory = kb * 1024.;
+                break;
+              }
+            meminfo.ignore(256, '\n');
+          }
+        char name[MPI_MAX_PROCESSOR_NAME];
+        int  length = 0;
+        MPI_Get_processor_name(name, &length);
+        host = std::string(name, length);
+      }
+      const auto hosts  = Utilities::MPI::all_gather(comm, host);
+      const auto memory = Utilities::MPI::all_gather(comm, host_memory);
+      std::map<std::string, double> per_host;
+      for (unsigned int r = 0; r < hosts.size(); ++r)
+        per_host[hosts[r]] = memory[r];
+      double total = 0.;
+      for (const auto &h : per_host)
+        total += h.second;
+      if (total <= 0. || bytes <= total)
+        return;
+      std::ostringstream why;
+      why << std::setprecision(2)
+          << "it must give a mesh that fits into memory: with it "
+          << "the run would have about " << cells << " cells and " << unknowns
+          << " unknowns, whose tangent matrix alone needs about "
+          << bytes / std::pow(1024., 3) << " GiB, against "
+          << total / std::pow(1024., 3) << " GiB on the " << per_host.size()
+          << " host(s) of this run";
+      throw InputError("Mesh/Global refinements",
+                       std::to_string(parameters.mesh.global_refinements),
+                       why.str());
     }
 
 
@@ -211,6 +339,8 @@ namespace DuctileContact
           {
             parallel::distributed::Triangulation<dim> coarse(comm);
             build_and_check_mesh(parameters, coarse, false);
+            check_boundary_expressions(parameters, coarse);
+            check_memory(parameters, coarse);
           }
       }
     catch (const InputError &e)
@@ -226,9 +356,14 @@ namespace DuctileContact
         // pattern; print them without deal.II's stack-trace header.
         std::ostringstream info;
         e.print_info(info);
+        std::string message = one_line(info.str());
+        for (auto pos = message.find("<input string>");
+             pos != std::string::npos;
+             pos = message.find("<input string>"))
+          message.replace(pos, 14, "'" + file_name + "'");
         if (root)
-          std::cerr << "Error in input file '" << file_name
-                    << "': " << one_line(info.str()) << std::endl;
+          std::cerr << "Error in input file '" << file_name << "': " << message
+                    << std::endl;
         return 1;
       }
 

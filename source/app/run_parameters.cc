@@ -156,6 +156,17 @@ namespace DuctileContact
       throw InputError("the input file '" + file_name + "' cannot be opened");
     std::stringstream text;
     text << in.rdbuf();
+    // Empty, or comments only.
+    bool        has_entries = false;
+    std::string line;
+    for (std::istringstream lines(text.str()); std::getline(lines, line);)
+      has_entries =
+        has_entries || !Utilities::trim(line.substr(0, line.find('#'))).empty();
+    if (!has_entries)
+      throw InputError("the input file '" + file_name +
+                       "' is empty (a run needs at least its scene and "
+                       "boundary conditions; 'ductile-contact "
+                       "--print-parameters' lists every entry)");
     parse_string(text.str());
   }
 
@@ -173,6 +184,13 @@ namespace DuctileContact
       std::any_of(bodies.begin(), bodies.end(), [](const BodyParameters &b) {
         return b.fracture;
       });
+    check_input(!phase_field || fe_degree >= 2,
+                "Finite elements/Polynomial degree",
+                std::to_string(fe_degree),
+                "it must be at least 2 when a body has a phase field (the "
+                "C0IP terms of "
+                "the fourth-order crack functional need second "
+                "derivatives inside the cells)");
     for (const ContactPairParameters &c : contact_pairs)
       {
         c.check();

@@ -1,9 +1,11 @@
+#include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_in.h>
 
 #include <ductile_contact/core/input_error.h>
 #include <ductile_contact/mesh/scene.h>
 
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 namespace DuctileContact
@@ -34,7 +36,9 @@ namespace DuctileContact
         throw InputError("Mesh/Gmsh/File name",
                          parameters.file_name,
                          "it is not a readable 3-D hexahedral Gmsh mesh (" +
-                           info.str() + ")");
+                           Utilities::trim(std::regex_replace(
+                             info.str(), std::regex("\\s+"), " ")) +
+                           ")");
       }
   }
 } // namespace DuctileContact
