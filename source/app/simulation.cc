@@ -533,6 +533,9 @@ namespace DuctileContact
     old_solution = u;
     u_ghosted    = u;
     load_run_state(checkpoints.read(resume_from, "state.bin"));
+    // The HDF5 output's mesh file holds the cells in the order of the
+    // partition that wrote it: a resumed run writes its own.
+    writer->mesh_changed();
     assembler->cell_averages(u_ghosted,
                              {t, last_dt, &old_solution, &history},
                              cell_quantities);
