@@ -19,6 +19,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <unistd.h>
 
 namespace DuctileContact
 {
@@ -192,6 +193,34 @@ namespace DuctileContact
 
 
 
+    /// Throws InputError when Output/Directory can neither be used nor
+    /// created: its nearest existing ancestor must be a folder this
+    /// process may write to. Creates nothing (also used by --validate).
+    void
+    check_output_directory(const std::string &directory)
+    {
+      namespace fs = std::filesystem;
+      std::error_code ec;
+      fs::path        existing = fs::absolute(directory, ec);
+      while (!existing.empty() && !fs::exists(existing, ec) &&
+             existing != existing.parent_path())
+        existing = existing.parent_path();
+      if (!fs::is_directory(existing, ec))
+        throw InputError("Output/Directory",
+                         directory,
+                         "it must be a folder or a path where one can be "
+                         "created ('" +
+                           existing.string() + "' is not a folder)");
+      if (access(existing.c_str(), W_OK | X_OK) != 0)
+        throw InputError("Output/Directory",
+                         directory,
+                         "it must be a folder this run may write to (no "
+                         "write permission in '" +
+                           existing.string() + "')");
+    }
+
+
+
     std::string
     join(const std::set<unsigned int> &ids)
     {
@@ -341,6 +370,7 @@ namespace DuctileContact
             build_and_check_mesh(parameters, coarse, false);
             check_boundary_expressions(parameters, coarse);
             check_memory(parameters, coarse);
+            check_output_directory(parameters.output.directory);
           }
       }
     catch (const InputError &e)
