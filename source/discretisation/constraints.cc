@@ -45,7 +45,10 @@ namespace DuctileContact
                     }
                   value = 0.;
                 }
-            values.insert(these.begin(), these.end());
+            // A later condition overrides an earlier one on shared DoFs, as
+            // when interpolate_boundary_values fills one map.
+            for (const auto &[dof, value] : these)
+              values[dof] = value;
           }
       return values;
     }
