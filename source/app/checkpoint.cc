@@ -195,9 +195,9 @@ namespace DuctileContact
                         const std::vector<BlockVector *> &owned,
                         CellData                         &cell_data)
   {
-    auto &tria = const_cast<parallel::distributed::Triangulation<dim> &>(
+    const auto &tria =
       dynamic_cast<const parallel::distributed::Triangulation<dim> &>(
-        dof_handler.get_triangulation()));
+        dof_handler.get_triangulation());
     parallel::distributed::SolutionTransfer<dim, BlockVector> vectors(
       dof_handler);
     std::vector<BlockVector *> out = owned;
