@@ -7,6 +7,7 @@
 #include <ductile_contact/app/simulation.h>
 #include <ductile_contact/app/stop_request.h>
 #include <ductile_contact/core/input_error.h>
+#include <ductile_contact/core/one_line.h>
 #include <ductile_contact/mesh/scene.h>
 #include <ductile_contact/output/probe_points.h>
 #include <ductile_contact/output/tee_stream.h>
@@ -45,14 +46,9 @@ namespace DuctileContact
     /// deal.II's multi-line parser messages as one line, with the line
     /// number of the input file ("line 13: ...").
     std::string
-    one_line(const std::string &message)
+    parser_message(const std::string &message)
     {
-      std::string out;
-      for (const char c : message)
-        if (!std::isspace(static_cast<unsigned char>(c)))
-          out += c;
-        else if (!out.empty() && out.back() != ' ')
-          out += ' ';
+      std::string       out    = one_line(message);
       const std::string source = " of file <input string>";
       const auto        pos    = out.find(source);
       if (pos != std::string::npos)
@@ -386,7 +382,7 @@ namespace DuctileContact
         // pattern; print them without deal.II's stack-trace header.
         std::ostringstream info;
         e.print_info(info);
-        std::string message = one_line(info.str());
+        std::string message = parser_message(info.str());
         for (auto pos = message.find("<input string>");
              pos != std::string::npos;
              pos = message.find("<input string>"))

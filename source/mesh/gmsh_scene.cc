@@ -2,10 +2,10 @@
 #include <deal.II/grid/grid_in.h>
 
 #include <ductile_contact/core/input_error.h>
+#include <ductile_contact/core/one_line.h>
 #include <ductile_contact/mesh/scene.h>
 
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 namespace DuctileContact
@@ -36,9 +36,7 @@ namespace DuctileContact
         throw InputError("Mesh/Gmsh/File name",
                          parameters.file_name,
                          "it is not a readable 3-D hexahedral Gmsh mesh (" +
-                           Utilities::trim(std::regex_replace(
-                             info.str(), std::regex("\\s+"), " ")) +
-                           ")");
+                           one_line(info.str()) + ")");
       }
   }
 } // namespace DuctileContact

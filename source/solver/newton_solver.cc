@@ -1,9 +1,9 @@
 #include <deal.II/lac/solver_control.h>
 
+#include <ductile_contact/core/one_line.h>
 #include <ductile_contact/solver/newton_solver.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -11,22 +11,6 @@
 
 namespace DuctileContact
 {
-  namespace
-  {
-    /// An exception's message on one line: deal.II's carry a banner and
-    /// line breaks; the screen line of a failed step has room for one.
-    std::string
-    one_line(const std::string &text)
-    {
-      std::string out;
-      for (const char c : text)
-        if (!std::isspace(static_cast<unsigned char>(c)))
-          out += c;
-        else if (!out.empty() && out.back() != ' ')
-          out += ' ';
-      return out;
-    }
-  } // namespace
 
   using namespace dealii;
 
