@@ -99,7 +99,7 @@ end
         clamp_s_grows = false;
       if (column("tangent_error") < 1e-4)
         ++exact_tangent;
-      if (std::isfinite(column("newton_rate")))
+      if (column("newton_rate") > 0.)
         rates.push_back(column("newton_rate"));
     }
   std::sort(rates.begin(), rates.end());

@@ -77,7 +77,7 @@ end
                                  std::max(t.at("external_work")[k], 1e-300));
       min_s_change      = std::min(min_s_change, t.at("min_s_change")[k]);
       const double rate = t.at("newton_rate")[k];
-      if (std::isfinite(rate))
+      if (rate > 0.)
         {
           rates.push_back(rate);
           if (t.at("newton_iterations")[k] >= 4)

@@ -82,7 +82,7 @@ subsection Output
       monotone = monotone && t.at("min_alpha_change_yielding")[k] >=
                                -1e-3 * t.at("max_alpha")[k];
       const double rate = t.at("newton_rate")[k];
-      if (std::isfinite(rate))
+      if (rate > 0.)
         rates.push_back(rate);
     }
   std::sort(rates.begin(), rates.end());

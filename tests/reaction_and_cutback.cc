@@ -128,7 +128,7 @@ main(int argc, char **argv)
     bool quadratic = true;
     for (const auto *table : {&ten, &twenty})
       for (std::size_t i = 1; i < table->at("newton_rate").size(); ++i)
-        if (std::isfinite(table->at("newton_rate")[i]))
+        if (table->at("newton_rate")[i] > 0.)
           quadratic = quadratic && table->at("newton_rate")[i] > 1.6;
     unsigned int defined = 0;
     for (const double rate : ten.at("newton_rate"))

@@ -339,9 +339,14 @@ namespace DuctileContact
     statistics.add("newton_iterations", report.iterations);
     if (has_block(Block::phase_field))
       statistics.add("staggered_iterations", report.staggered_iterations);
-    statistics.add("newton_rate", report.convergence_rate);
+    // Undefined values are written as 0 (an order and an error are
+    // positive where defined): no NaN in the results.
+    const auto defined = [](const double v) {
+      return std::isfinite(v) ? v : 0.;
+    };
+    statistics.add("newton_rate", defined(report.convergence_rate));
     if (parameters.newton.check_tangent)
-      statistics.add("tangent_error", report.tangent_error);
+      statistics.add("tangent_error", defined(report.tangent_error));
     statistics.add("linear_iterations", report.linear_iterations);
     statistics.add("cutbacks", cutbacks);
     // Cumulative wall time of the phases, for work-precision studies.
