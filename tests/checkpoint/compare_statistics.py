@@ -39,14 +39,16 @@ def family(column):
     return column
 
 
-def main():
-    head, ref = read(sys.argv[1])
-    head2, new = read(sys.argv[2])
+def largest_difference(reference, other):
+    """(largest difference in units of its column's scale, where), or
+    raises ValueError when the columns or the steps differ."""
+    head, ref = read(reference)
+    head2, new = read(other)
     if head != head2:
-        sys.exit(f"FAIL: the columns differ:\n{head}\n{head2}")
+        raise ValueError(f"the columns differ:\n{head}\n{head2}")
     if [r[0] for r in ref] != [r[0] for r in new]:
-        sys.exit(f"FAIL: the steps differ: {[r[0] for r in ref]} vs "
-                 f"{[r[0] for r in new]}")
+        raise ValueError(f"the steps differ: {[r[0] for r in ref]} vs "
+                         f"{[r[0] for r in new]}")
     scale = {}
     for k, column in enumerate(head):
         top = max(abs(r[k]) for r in ref)
@@ -60,10 +62,20 @@ def main():
             error = abs(a[k] - b[k]) / s
             if error > worst:
                 worst, where = error, f"{column} at step {int(a[0])}"
-    print(f"{len(ref)} rows, largest difference {worst:.1e} of its scale"
+    return worst, where
+
+
+def main():
+    try:
+        worst, where = largest_difference(sys.argv[1], sys.argv[2])
+    except ValueError as e:
+        sys.exit(f"FAIL: {e}")
+    rows = sum(1 for line in open(sys.argv[1]) if line.strip()) - 1
+    print(f"{rows} rows, largest difference {worst:.1e} of its scale"
           + (f" ({where})" if where else ""))
     if worst > 1e-6:
         sys.exit("FAIL: the runs differ")
 
 
-main()
+if __name__ == "__main__":
+    main()
