@@ -8,7 +8,11 @@
 // x_exact, b = K x_exact; each solver must return x_exact to 1e-6 relative:
 //  - direct with KLU and MUMPS on the monolithic copy of the nine blocks,
 //    also after the values change (the copied pattern is reused) and after
-//    setup() (the pattern is rebuilt);
+//    setup() (the pattern is rebuilt); MUMPS with single-precision factors
+//    (through flexible GMRES: the rounded triangular solves are not one
+//    fixed linear map, and plain GMRES reported a residual ~1e3 below the
+//    true one), and with a tolerance GMRES cannot reach, where it must
+//    factorise again in double precision;
 //  - gmres-amg (and cg-amg, which is GMRES for coupled systems) with the
 //    block lower-triangular preconditioner, s by AMG and by a direct
 //    factorisation, within an iteration bound;
@@ -229,7 +233,25 @@ namespace
             parameters.direct_solver = from_name(direct_solver_names(), direct);
             check(label + "direct " + direct, 0);
           }
-      const bool has_s = d.dofs_per_block[Block::phase_field] > 0;
+      // Single-precision factors through flexible GMRES; on the whole
+      // layouts also with a tolerance GMRES cannot reach (below double
+      // round-off): then double-precision factors.
+      parameters.direct_solver = DirectSolver::mumps;
+      parameters.precision     = FactorPrecision::single_precision;
+      check(label + "direct mumps, single-precision factors", 0);
+      if (label.empty())
+        {
+          const unsigned int fallbacks = solver.fallback_factorisations();
+          parameters.relative_tolerance = 1e-20;
+          check("direct mumps, single-precision factors, tolerance 1e-20", 0);
+          out << "    factorised again in double precision: "
+              << Testing::yes_no(solver.fallback_factorisations() ==
+                                 fallbacks + 1)
+              << std::endl;
+          parameters.relative_tolerance = 1e-10;
+        }
+      parameters.precision = FactorPrecision::double_precision;
+      const bool has_s     = d.dofs_per_block[Block::phase_field] > 0;
       // The u-only test tangent is symmetric: LDL^T of its upper triangle.
       if (!has_s && d.dofs_per_block[Block::hardening] == 0)
         {

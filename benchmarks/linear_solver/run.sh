@@ -21,6 +21,7 @@ variants=(
   "mumps-metis:Type = direct;Direct solver = mumps;Ordering = metis"
   "mumps-metis-ldlt:Type = direct;Direct solver = mumps;Factorisation = ldlt"
   "mumps-metis-reuse:Type = direct;Direct solver = mumps;Factorisation reuse = 60"
+  "mumps-metis-single:Type = direct;Direct solver = mumps;Factorisation precision = single"
   "gmres-amg:Type = gmres-amg"
 )
 scenes=("$@")

@@ -83,6 +83,7 @@ namespace DuctileContact
     // and so is the direct solver's analysis.
     monolithic.reset();
     mumps.reset();
+    fallback.reset();
     reuse_iterations_left = 0;
     reuses_to_skip        = 0;
     skipped_reuses        = 0;
@@ -175,10 +176,25 @@ namespace DuctileContact
     const MumpsSolver::Statistics &s = mumps->statistics();
     out << "MUMPS (" << name_of(factorisation_names(), parameters.factorisation)
         << ", " << name_of(direct_ordering_names(), parameters.ordering)
-        << " ordering): " << s.analyses << " analyses " << s.analysis_time
+        << " ordering, "
+        << name_of(factor_precision_names(), parameters.precision)
+        << " precision): " << s.analyses << " analyses " << s.analysis_time
         << " s, " << s.factorisations << " factorisations " << s.factor_time
         << " s, " << s.solves << " solves " << s.solve_time << " s; "
-        << s.factor_entries << " entries in the last factors" << std::endl;
+        << s.factor_entries << " entries in the last factors";
+    if (fallback)
+      out << "; " << fallback->statistics().factorisations
+          << " double-precision factorisations where the single-precision "
+             "factors did not converge";
+    out << std::endl;
+  }
+
+
+
+  unsigned int
+  LinearSolver::fallback_factorisations() const
+  {
+    return fallback ? fallback->statistics().factorisations : 0;
   }
 
 
@@ -190,12 +206,14 @@ namespace DuctileContact
   {
     if (parameters.direct_solver == DirectSolver::mumps)
       {
-        if (!mumps ||
-            !mumps->made_for(parameters.factorisation, parameters.ordering))
+        if (!mumps || !mumps->made_for(parameters.factorisation,
+                                       parameters.ordering,
+                                       parameters.precision))
           mumps = std::make_unique<MumpsSolver>(
             discretisation.dof_handler.get_communicator(),
             parameters.factorisation,
-            parameters.ordering);
+            parameters.ordering,
+            parameters.precision);
         // Old factors serve until GMRES has made `Factorisation reuse`
         // iterations with them in all, or fails within those left. When
         // the factors of the previous matrix fail, the next 1, 2, 4, ...
@@ -206,7 +224,8 @@ namespace DuctileContact
           {
             const bool fresh =
               reuse_iterations_left == parameters.reuse_iterations;
-            const unsigned int n = solve_with_old_factors(A, x, b);
+            const unsigned int n =
+              solve_with_old_factors(A, x, b, reuse_iterations_left);
             if (n > 0)
               {
                 reuse_iterations_left -= std::min(n, reuse_iterations_left);
@@ -224,8 +243,30 @@ namespace DuctileContact
         else
           ++skipped_reuses;
         mumps->factorize(A.trilinos_matrix());
-        mumps->solve(x.trilinos_vector(), b.trilinos_vector());
         reuse_iterations_left = parameters.reuse_iterations;
+        if (mumps->exact())
+          {
+            mumps->solve(x.trilinos_vector(), b.trilinos_vector());
+            return 1;
+          }
+        // Single-precision factors of this matrix: GMRES to the tolerance,
+        // within the reuse budget (one restart cycle if reuse is off).
+        const unsigned int n = solve_with_old_factors(
+          A, x, b, std::max(parameters.reuse_iterations, gmres_restart));
+        if (n > 0)
+          {
+            reuse_iterations_left -= std::min(n, reuse_iterations_left);
+            return n;
+          }
+        // Too ill-conditioned for them: double-precision factors, exact.
+        if (!fallback)
+          fallback = std::make_unique<MumpsSolver>(
+            discretisation.dof_handler.get_communicator(),
+            parameters.factorisation,
+            parameters.ordering);
+        fallback->factorize(A.trilinos_matrix());
+        fallback->solve(x.trilinos_vector(), b.trilinos_vector());
+        reuse_iterations_left = 0;
         return 1;
       }
     SolverControl                                  control(1, 0.);
@@ -243,7 +284,8 @@ namespace DuctileContact
   unsigned int
   LinearSolver::solve_with_old_factors(const TrilinosWrappers::SparseMatrix &A,
                                        TrilinosWrappers::MPI::Vector        &x,
-                                       const TrilinosWrappers::MPI::Vector  &b)
+                                       const TrilinosWrappers::MPI::Vector  &b,
+                                       const unsigned int max_iterations)
   {
     // The factors of an earlier matrix as a right preconditioner: GMRES then
     // tests the true residual ||b - A x||.
@@ -257,18 +299,33 @@ namespace DuctileContact
         mumps->solve(dst.trilinos_vector(), src.trilinos_vector());
       }
     };
-    SolverControl                              control(reuse_iterations_left,
+    SolverControl control(max_iterations,
                           parameters.relative_tolerance * b.l2_norm(),
                           false,
                           false);
-    SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-      control,
-      SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(gmres_restart,
-                                                                 true));
     x = 0.;
     try
       {
-        gmres.solve(A, x, b, OldFactors{mumps.get()});
+        if (mumps->exact())
+          {
+            SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+              control,
+              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+                gmres_restart, true));
+            gmres.solve(A, x, b, OldFactors{mumps.get()});
+          }
+        else
+          {
+            // Single-precision triangular solves round their result, so
+            // the preconditioner is not one fixed linear map: flexible
+            // GMRES keeps the preconditioned vectors, and its residual
+            // stays the true one.
+            SolverFGMRES<TrilinosWrappers::MPI::Vector> fgmres(
+              control,
+              SolverFGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+                gmres_restart));
+            fgmres.solve(A, x, b, OldFactors{mumps.get()});
+          }
       }
     catch (const SolverControl::NoConvergence &)
       {

@@ -7,31 +7,65 @@
 #include <algorithm>
 #include <dmumps_c.h>
 #include <metis.h>
+#include <smumps_c.h>
 #include <stdexcept>
 
 namespace DuctileContact
 {
   using namespace dealii;
 
-  struct MumpsSolver::Instance
-  {
-    DMUMPS_STRUC_C id;
-  };
-
   namespace
   {
+    void
+    call(DMUMPS_STRUC_C &id)
+    {
+      dmumps_c(&id);
+    }
+
+    void
+    call(SMUMPS_STRUC_C &id)
+    {
+      smumps_c(&id);
+    }
+
     /// MUMPS's 1-based parameter arrays.
+    template <typename Id>
     int &
-    icntl(DMUMPS_STRUC_C &id, const int i)
+    icntl(Id &id, const int i)
     {
       return id.icntl[i - 1];
     }
 
+    template <typename Id>
     int
-    infog(const DMUMPS_STRUC_C &id, const int i)
+    infog(const Id &id, const int i)
     {
       return id.infog[i - 1];
     }
+  } // namespace
+
+  /// The MUMPS instance of the chosen precision; values and right-hand
+  /// sides in single precision are converted copies.
+  struct MumpsSolver::Instance
+  {
+    bool               single = false;
+    DMUMPS_STRUC_C     d{};
+    SMUMPS_STRUC_C     s{};
+    std::vector<float> values, rhs;
+
+    template <typename F>
+    void
+    visit(F &&f)
+    {
+      if (single)
+        f(s);
+      else
+        f(d);
+    }
+  };
+
+  namespace
+  {
 
     /// The MUMPS code of an ordering (ICNTL(7)).
     int
@@ -73,43 +107,49 @@ namespace DuctileContact
 
 
 
-  MumpsSolver::MumpsSolver(const MPI_Comm       comm,
-                           const Factorisation  factorisation,
-                           const DirectOrdering ordering)
+  MumpsSolver::MumpsSolver(const MPI_Comm        comm,
+                           const Factorisation   factorisation,
+                           const DirectOrdering  ordering,
+                           const FactorPrecision precision)
       : comm(comm)
       , factorisation(factorisation)
       , ordering(ordering)
+      , precision(precision)
       , mumps(std::make_unique<Instance>())
   {
-    DMUMPS_STRUC_C &id = mumps->id;
-    id.job             = -1;
-    id.par             = 1; // rank 0 works too
-    id.sym             = (factorisation == Factorisation::ldlt ? 2 : 0);
-    id.comm_fortran    = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
-    dmumps_c(&id);
-    AssertThrow(infog(id, 1) >= 0,
-                ExcMessage("MUMPS could not be initialised (INFOG(1) = " +
-                           std::to_string(infog(id, 1)) + ")"));
-    // No output of MUMPS's own: failures become exceptions here.
-    icntl(id, 1)  = -1;
-    icntl(id, 2)  = -1;
-    icntl(id, 3)  = -1;
-    icntl(id, 4)  = 0;
-    icntl(id, 5)  = 0; // assembled matrix
-    icntl(id, 18) = 3; // distributed triplets
-    icntl(id, 20) = 0; // dense right-hand side on rank 0
-    icntl(id, 21) = 0; // solution on rank 0
-    icntl(id, 28) = 1; // sequential analysis (the orderings we have)
-    icntl(id, 7)  = mumps_ordering(ordering);
-    icntl(id, 14) = 30; // work space margin over the analysis' estimate, %
+    mumps->single = (precision == FactorPrecision::single_precision);
+    mumps->visit([&](auto &id) {
+      id.job          = -1;
+      id.par          = 1; // rank 0 works too
+      id.sym          = (factorisation == Factorisation::ldlt ? 2 : 0);
+      id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(comm));
+      call(id);
+      AssertThrow(infog(id, 1) >= 0,
+                  ExcMessage("MUMPS could not be initialised (INFOG(1) = " +
+                             std::to_string(infog(id, 1)) + ")"));
+      // No output of MUMPS's own: failures become exceptions here.
+      icntl(id, 1)  = -1;
+      icntl(id, 2)  = -1;
+      icntl(id, 3)  = -1;
+      icntl(id, 4)  = 0;
+      icntl(id, 5)  = 0; // assembled matrix
+      icntl(id, 18) = 3; // distributed triplets
+      icntl(id, 20) = 0; // dense right-hand side on rank 0
+      icntl(id, 21) = 0; // solution on rank 0
+      icntl(id, 28) = 1; // sequential analysis (the orderings we have)
+      icntl(id, 7)  = mumps_ordering(ordering);
+      icntl(id, 14) = 30; // work space margin over the analysis' estimate, %
+    });
   }
 
 
 
   MumpsSolver::~MumpsSolver()
   {
-    mumps->id.job = -2;
-    dmumps_c(&mumps->id);
+    mumps->visit([](auto &id) {
+      id.job = -2;
+      call(id);
+    });
   }
 
 
@@ -117,24 +157,25 @@ namespace DuctileContact
   void
   MumpsSolver::run(const int job, const std::string &what)
   {
-    DMUMPS_STRUC_C &id = mumps->id;
-    for (unsigned int attempt = 0;; ++attempt)
-      {
-        id.job = job;
-        dmumps_c(&id);
-        const int code = infog(id, 1);
-        if (code >= 0)
-          return;
-        if ((code == -8 || code == -9) && attempt < 4)
-          {
-            icntl(id, 14) *= 2;
-            continue;
-          }
-        throw std::runtime_error(
-          "MUMPS " + what + " failed: INFOG(1) = " + std::to_string(code) +
-          ", INFOG(2) = " + std::to_string(infog(id, 2)) + " (" +
-          mumps_error(code) + ")");
-      }
+    mumps->visit([&](auto &id) {
+      for (unsigned int attempt = 0;; ++attempt)
+        {
+          id.job = job;
+          call(id);
+          const int code = infog(id, 1);
+          if (code >= 0)
+            return;
+          if ((code == -8 || code == -9) && attempt < 4)
+            {
+              icntl(id, 14) *= 2;
+              continue;
+            }
+          throw std::runtime_error(
+            "MUMPS " + what + " failed: INFOG(1) = " + std::to_string(code) +
+            ", INFOG(2) = " + std::to_string(infog(id, 2)) + " (" +
+            mumps_error(code) + ")");
+        }
+    });
   }
 
 
@@ -176,7 +217,7 @@ namespace DuctileContact
       return;
 
     // The graph of K + K^T without the diagonal, in compressed rows.
-    idx_t              n = mumps->id.n;
+    idx_t              n = n_global;
     std::vector<idx_t> xadj(n + 1, 0);
     for (std::size_t k = 0; k < all_rows.size(); ++k)
       if (all_rows[k] != all_columns[k])
@@ -304,18 +345,24 @@ namespace DuctileContact
     const bool same    = analysed && new_row == row && new_column == column;
     const bool analyse = Utilities::MPI::min(same ? 1 : 0, comm) == 0;
 
-    DMUMPS_STRUC_C &id = mumps->id;
-    factorised         = false;
+    factorised                  = false;
+    const auto point_to_pattern = [&]() {
+      mumps->visit([&](auto &id) {
+        id.irn_loc = row.data();
+        id.jcn_loc = column.data();
+      });
+    };
     if (analyse)
       {
         Timer timer;
         row.swap(new_row);
         column.swap(new_column);
-        id.n       = A.NumGlobalRows();
-        id.nnz_loc = static_cast<MUMPS_INT8>(row.size());
-        id.irn_loc = row.data();
-        id.jcn_loc = column.data();
-        id.a_loc   = value.data();
+        n_global = A.NumGlobalRows();
+        mumps->visit([&](auto &id) {
+          id.n       = n_global;
+          id.nnz_loc = static_cast<MUMPS_INT8>(row.size());
+        });
+        point_to_pattern();
 
         owned_rows.resize(A.NumMyRows());
         for (int r = 0; r < A.NumMyRows(); ++r)
@@ -340,12 +387,15 @@ namespace DuctileContact
                     0,
                     comm);
         gathered.resize(gathered_rows.size());
-        rhs.resize(rank == 0 ? id.n : 0);
+        rhs.resize(rank == 0 ? n_global : 0);
+        mumps->rhs.resize(mumps->single ? rhs.size() : 0);
 
         if (ordering == DirectOrdering::metis)
           {
             compute_metis_order();
-            id.perm_in = (rank == 0 ? pivot_order.data() : nullptr);
+            mumps->visit([&](auto &id) {
+              id.perm_in = (rank == 0 ? pivot_order.data() : nullptr);
+            });
           }
         run(1, "analysis");
         analysed = true;
@@ -354,15 +404,23 @@ namespace DuctileContact
       }
 
     Timer timer;
-    id.irn_loc = row.data();
-    id.jcn_loc = column.data();
-    id.a_loc   = value.data();
+    point_to_pattern();
+    // The values MUMPS reads: ours, or a single-precision copy.
+    if (mumps->single)
+      {
+        mumps->values.assign(value.begin(), value.end());
+        mumps->s.a_loc = mumps->values.data();
+      }
+    else
+      mumps->d.a_loc = value.data();
     run(2, "factorisation");
     factorised = true;
     ++stats.factorisations;
     stats.factor_time += timer.wall_time();
-    stats.factor_entries = static_cast<double>(
-      infog(id, 29) >= 0 ? infog(id, 29) : -1.e6 * infog(id, 29));
+    mumps->visit([&](auto &id) {
+      stats.factor_entries = static_cast<double>(
+        infog(id, 29) >= 0 ? infog(id, 29) : -1.e6 * infog(id, 29));
+    });
   }
 
 
@@ -374,9 +432,8 @@ namespace DuctileContact
     AssertThrow(b.MyLength() == static_cast<int>(owned_rows.size()) &&
                   x.MyLength() == b.MyLength(),
                 ExcMessage("vectors of another layout than the matrix"));
-    Timer           timer;
-    DMUMPS_STRUC_C &id   = mumps->id;
-    const int       rank = Utilities::MPI::this_mpi_process(comm);
+    Timer     timer;
+    const int rank = Utilities::MPI::this_mpi_process(comm);
 
     MPI_Gatherv(b[0],
                 b.MyLength(),
@@ -391,10 +448,20 @@ namespace DuctileContact
       for (std::size_t k = 0; k < gathered.size(); ++k)
         rhs[gathered_rows[k]] = gathered[k];
 
-    id.rhs  = (rank == 0 ? rhs.data() : nullptr);
-    id.nrhs = 1;
-    id.lrhs = id.n;
+    if (mumps->single)
+      {
+        mumps->rhs.assign(rhs.begin(), rhs.end());
+        mumps->s.rhs = (rank == 0 ? mumps->rhs.data() : nullptr);
+      }
+    else
+      mumps->d.rhs = (rank == 0 ? rhs.data() : nullptr);
+    mumps->visit([&](auto &id) {
+      id.nrhs = 1;
+      id.lrhs = n_global;
+    });
     run(3, "solve");
+    if (mumps->single && rank == 0)
+      std::copy(mumps->rhs.begin(), mumps->rhs.end(), rhs.begin());
 
     if (rank == 0)
       for (std::size_t k = 0; k < gathered.size(); ++k)

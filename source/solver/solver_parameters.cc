@@ -191,6 +191,16 @@ namespace DuctileContact
                "triangle only: about half the time and memory, exact only "
                "for a symmetric tangent; with an unsymmetric one Newton "
                "converges more slowly).");
+    add_option(prm,
+               "Factorisation precision",
+               precision,
+               factor_precision_names(),
+               "Direct solver = mumps: double, or single-precision factors "
+               "(half the memory traffic and about half the factorisation "
+               "time); single-precision factors are used through GMRES to "
+               "Relative tolerance like reused ones, so the answer is the "
+               "same; a matrix they cannot precondition (condition number "
+               "near 1e7 and above) is factorised again in double.");
     prm.add_parameter(
       "Factorisation reuse",
       reuse_iterations,

@@ -66,6 +66,11 @@ namespace DuctileContact
     void
     print_summary(std::ostream &out) const;
 
+    /// Factorisations in double precision because single-precision factors
+    /// of the same matrix did not bring GMRES to the tolerance.
+    unsigned int
+    fallback_factorisations() const;
+
   private:
     /// The displacement block alone (alpha and s empty).
     unsigned int
@@ -82,11 +87,12 @@ namespace DuctileContact
                  const dealii::TrilinosWrappers::MPI::Vector  &b);
 
     /// GMRES preconditioned by the last MUMPS factors; 0 if it did not
-    /// reach the tolerance within the iterations left to them.
+    /// reach the tolerance within @p max_iterations.
     unsigned int
     solve_with_old_factors(const dealii::TrilinosWrappers::SparseMatrix &A,
                            dealii::TrilinosWrappers::MPI::Vector        &x,
-                           const dealii::TrilinosWrappers::MPI::Vector  &b);
+                           const dealii::TrilinosWrappers::MPI::Vector  &b,
+                           unsigned int max_iterations);
 
     /// The direct solver on the monolithic copy of the coupled system.
     unsigned int
@@ -147,6 +153,9 @@ namespace DuctileContact
     /// Direct solver = mumps: kept between solves (its analysis is redone
     /// only when the pattern changes).
     std::unique_ptr<MumpsSolver> mumps;
+    /// Double-precision factors for a matrix that single-precision factors
+    /// (Factorisation precision = single) cannot precondition.
+    std::unique_ptr<MumpsSolver> fallback;
 
     /// GMRES iterations the current factors may still serve (`Factorisation
     /// reuse` after a factorisation).

@@ -155,6 +155,22 @@ namespace DuctileContact
     return t;
   }
 
+  /// Linear solver/Factorisation precision: the arithmetic of the factors.
+  enum class FactorPrecision
+  {
+    double_precision,
+    single_precision
+  };
+
+  inline const NameTable<FactorPrecision> &
+  factor_precision_names()
+  {
+    static const NameTable<FactorPrecision> t{
+      {FactorPrecision::double_precision, "double"},
+      {FactorPrecision::single_precision, "single"}};
+    return t;
+  }
+
   /// Linear solver/Phase-field preconditioner.
   enum class PhaseFieldPreconditioner
   {
@@ -177,6 +193,7 @@ namespace DuctileContact
     DirectSolver     direct_solver = DirectSolver::mumps;
     DirectOrdering   ordering      = DirectOrdering::metis;
     Factorisation    factorisation = Factorisation::lu;
+    FactorPrecision  precision     = FactorPrecision::double_precision;
     /// Direct solver = mumps: GMRES iterations preconditioned by the last
     /// factors before the matrix is factorised again (0: every solve;
     /// 60 measured best of 20, 40, 60, 100, benchmarks/linear_solver).
