@@ -3,14 +3,15 @@
 how far the run got (time reached against the end time), accepted steps,
 cut-backs, Newton iterations, the wall time, the end state (force on the
 block's top, max s, max alpha, the largest penetration), whether the
-statistics or the field output hold a NaN or Inf, whether every file the
+statistics or any field output hold a NaN or Inf, whether every file the
 .pvd series names exists, and the run's last message. Writes results.md;
 exits 1 when a run crashed, hung or wrote a non-finite number."""
-import math
 import os
 import re
 import sys
 import xml.etree.ElementTree as ET
+
+import numpy
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, ".."))
@@ -33,8 +34,8 @@ meaning = {0: "end reached", 1: "bad input", 2: "gave up cleanly",
 
 
 def non_finite_in_fields(run):
-    """Names of point/cell arrays with NaN or Inf in the last .pvtu (None
-    if vtk is missing or there is no output)."""
+    """Names of point/cell arrays with NaN or Inf in any .pvtu of the run
+    (None if vtk is missing or there is no output)."""
     try:
         import vtk
         from vtk.util.numpy_support import vtk_to_numpy
@@ -43,17 +44,18 @@ def non_finite_in_fields(run):
     files = sorted(f for f in os.listdir(run) if f.endswith(".pvtu"))
     if not files:
         return None
-    reader = vtk.vtkXMLPUnstructuredGridReader()
-    reader.SetFileName(os.path.join(run, files[-1]))
-    reader.Update()
-    grid = reader.GetOutput()
-    bad = []
-    for data in (grid.GetPointData(), grid.GetCellData()):
-        for i in range(data.GetNumberOfArrays()):
-            values = vtk_to_numpy(data.GetArray(i))
-            if not (values == values).all() or abs(values).max() == math.inf:
-                bad.append(data.GetArrayName(i))
-    return bad
+    bad = set()
+    for name in files:
+        reader = vtk.vtkXMLPUnstructuredGridReader()
+        reader.SetFileName(os.path.join(run, name))
+        reader.Update()
+        grid = reader.GetOutput()
+        for data in (grid.GetPointData(), grid.GetCellData()):
+            for i in range(data.GetNumberOfArrays()):
+                values = vtk_to_numpy(data.GetArray(i))
+                if not numpy.isfinite(values).all():
+                    bad.add(data.GetArrayName(i))
+    return sorted(bad)
 
 
 def series_complete(run):
@@ -68,9 +70,10 @@ def series_complete(run):
 
 
 def last_message(screen):
+    """The run's last error or stop message ("" when it ended normally)."""
     for line in reversed(screen.split("\n")):
-        if re.search(r"Error|error|gave up|giving up|Stopp|stopp|Warning", line):
-            return line.strip()[:160]
+        if re.match(r"\s*(Error|Stopped)", line):
+            return line.strip()[:200]
     return ""
 
 
@@ -117,7 +120,7 @@ with open(os.path.join(here, "results.md"), "w") as out:
     out.write("|" + "---|" * 16 + "\n")
     out.write("\n".join(rows) + "\n\n")
     out.write("A run passes when it ends with exit code 0 (end reached) or 2 "
-              "(gave up cleanly), its statistics and its last field output "
+              "(gave up cleanly), its statistics and all its field output "
               "hold no NaN or Inf, and every file its .pvd series names "
               "exists. Failing: %s.\n" % (", ".join(failures) or "none"))
 print(open(os.path.join(here, "results.md")).read())

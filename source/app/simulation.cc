@@ -613,18 +613,29 @@ namespace DuctileContact
         if (!report.converged)
           {
             u                = u_old;
-            const bool go_on = controller.reject(dt_try);
+            const bool go_on = controller.reject(t, dt_try);
             pcout << "  step " << step + 1 << " at t = " << t + dt_try
                   << " failed (" << report.failure
                   << "); cutting back to dt = " << controller.increment()
                   << std::endl;
             if (!go_on)
               {
-                pcout << "Error: the load step would have to be smaller than "
-                         "'Load stepping/Minimum time step' = "
-                      << ls.minimum_time_step << " at t = " << t
-                      << ". Results up to this time are in '"
-                      << parameters.output.directory << "'." << std::endl;
+                if (controller.stalled())
+                  pcout << "Error: the load stepping stalls: "
+                        << ls.max_stalled_failures
+                        << " failed steps since t = " << controller.stall_time()
+                        << ", while t advanced by less than 1e-3 of the time "
+                           "step ('Load stepping/Maximum failures without "
+                           "progress'); the last failure: "
+                        << report.failure << " at t = " << t
+                        << ". Results up to this time are in '"
+                        << parameters.output.directory << "'." << std::endl;
+                else
+                  pcout << "Error: the load step would have to be smaller "
+                           "than 'Load stepping/Minimum time step' = "
+                        << ls.minimum_time_step << " at t = " << t
+                        << ". Results up to this time are in '"
+                        << parameters.output.directory << "'." << std::endl;
                 if (Utilities::MPI::this_mpi_process(comm) == 0)
                   linear_solver->print_summary(pcout.get_stream());
                 return gave_up;

@@ -21,11 +21,17 @@ namespace DuctileContact
 
 
   bool
-  StepController::reject(const double dt_try)
+  StepController::reject(const double t, const double dt_try)
   {
     dt = 0.5 * dt_try;
     ++n_cutbacks_of_step;
-    return dt >= parameters.minimum_time_step;
+    if (stalled_failures == 0 || t - stall_start > 1.e-3 * parameters.time_step)
+      {
+        stall_start      = t;
+        stalled_failures = 0;
+      }
+    ++stalled_failures;
+    return dt >= parameters.minimum_time_step && !stalled();
   }
 
 

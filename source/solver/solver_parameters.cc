@@ -46,6 +46,16 @@ namespace DuctileContact
       "otherwise keep the small increment to the end. A step that then "
       "fails is cut back as usual. 0: only easy steps grow the increment.",
       Patterns::Integer(0));
+    prm.add_parameter(
+      "Maximum failures without progress",
+      max_stalled_failures,
+      "The run gives up (exit code 2) after this many failed steps while t "
+      "advanced by less than 1e-3 of the Time step since the first of them: "
+      "a state from which no increment above a tiny one converges (elements "
+      "about to invert, a limit point) would otherwise alternate failed "
+      "steps with accepted tiny ones for ever, each above the Minimum time "
+      "step. Counted over the whole run, not per step. 0: never.",
+      Patterns::Integer(0));
     add_option(
       prm,
       "Predictor",

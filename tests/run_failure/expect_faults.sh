@@ -10,7 +10,11 @@
 #  - nan_traction.prm: a residual that is not finite (a NaN traction),
 #    named with the cell's position and the body;
 #  - linear_failure.prm: a failed linear solve (GMRES limited to one
-#    iteration), named with the iterations and the residual reached.
+#    iteration), named with the iterations and the residual reached;
+#  - stall.prm: a box pushed flat with a minimum step of 1e-12: failed
+#    steps alternate with ever smaller accepted ones; the run gives up
+#    after 20 failures within 1e-3 of t (Maximum failures without
+#    progress) instead of creeping towards t = 0.5 for ever.
 # (A linear solve that returns NaN or Inf is also caught, "the linear solve
 # returned an update that is not finite"; no input provokes it reliably.)
 set -u
@@ -32,7 +36,8 @@ expect() { # NAME "MESSAGE" ...: exit code 2, each message, results readable
   for message in "$@"; do
     grep -qF -- "$message" <<< "$out" || fail "$name: no '$message'"
   done
-  [[ $(grep -c "Minimum time step" <<< "$out") -eq 1 ]] ||
+  [[ $(grep -c -E "Minimum time step|Maximum failures without progress" \
+    <<< "$out") -eq 1 ]] ||
     fail "$name: no single give-up message"
   head -n 1 "${name}_results/statistics" | grep -q "F5_z" ||
     fail "$name: statistics unreadable"
@@ -53,4 +58,6 @@ expect nan_traction "step 4 at t = 0.4 failed" \
   "the residual is not finite (NaN or Inf) in the cell at (0.5 0.5 0.5) m of body 0 'body'"
 expect linear_failure "step 1 at t = 1 failed" \
   "the iterative linear solver did not converge in 1 iterations (residual"
+expect stall "Error: the load stepping stalls: 20 failed steps since t = 0.49" \
+  "an element inverts (J = -"
 echo PASS

@@ -23,10 +23,27 @@ namespace DuctileContact
     double
     next_increment(const double t) const;
 
-    /// After the failed attempt @p dt_try: halves it; false when the next
-    /// increment would be below `Minimum time step`.
+    /// After the failed attempt @p dt_try from time @p t: halves it; false
+    /// when the next increment would be below `Minimum time step` or the
+    /// run stalls (stalled()).
     bool
-    reject(const double dt_try);
+    reject(const double t, const double dt_try);
+
+    /// Whether `Maximum failures without progress` failed steps happened
+    /// while t advanced by less than 1e-3 Time step.
+    bool
+    stalled() const
+    {
+      return parameters.max_stalled_failures > 0 &&
+             stalled_failures >= parameters.max_stalled_failures;
+    }
+
+    /// The time at which the failures counted by stalled() began.
+    double
+    stall_time() const
+    {
+      return stall_start;
+    }
 
     /// After the accepted step @p dt_try that took @p newton_iterations.
     void
@@ -53,6 +70,7 @@ namespace DuctileContact
     serialize(Archive &ar, const unsigned int)
     {
       ar &dt &n_cutbacks_of_step &same_increment_steps &last_accepted_dt;
+      ar &stall_start                                  &stalled_failures;
       if (Archive::is_loading::value)
         dt = std::min(dt, parameters.time_step);
     }
@@ -63,5 +81,8 @@ namespace DuctileContact
     unsigned int                  n_cutbacks_of_step   = 0;
     unsigned int                  same_increment_steps = 0;
     double                        last_accepted_dt     = 0.;
+    /// Failed steps since stall_start within 1e-3 Time step of it.
+    double       stall_start      = -1.;
+    unsigned int stalled_failures = 0;
   };
 } // namespace DuctileContact

@@ -40,6 +40,9 @@ namespace DuctileContact
     /// Accepted steps in a row at one increment after which it grows even
     /// if none was easy (0: never).
     unsigned int steps_before_growth = 4;
+    /// Failed steps while t advances by less than 1e-3 Time step after
+    /// which the run gives up (0: never; see declare()).
+    unsigned int max_stalled_failures = 20;
     /// constant | linear: first guess of a step (see declare()).
     Predictor predictor = Predictor::constant;
 
