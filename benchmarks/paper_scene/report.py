@@ -26,6 +26,7 @@ names = {
     "eta_f_half": "eta_f halved (5e4)",
     "dt_half": "load step halved (0.075 mm)",
     "clamp_refined": "plate refined once at the clamp (x > 0.22 m)",
+    "block_refined": "block refined once (10 x 10 x 10 cells)",
     "ductile_zeta1": "plastic work driver, w_c = 0, zeta = 1",
     "ductile": "plastic work driver, w_c = 5e5 J/m^3, zeta = 10",
     "ductile_zeta30": "plastic work driver, w_c = 5e5 J/m^3, zeta = 30",

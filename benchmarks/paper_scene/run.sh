@@ -21,12 +21,13 @@ declare -A settings=(
   [eta_f_half]="$fracture;set Viscosity = 5e4;end;end"
   [dt_half]="subsection Load stepping;set Time step = 0.5;end"
   [clamp_refined]="subsection Mesh;set Local refinement boxes = 0.22,0,0 : 0.3,0.2,0.02 : 1;end"
+  [block_refined]="subsection Mesh;set Local refinement boxes = 0,0,0.02 : 0.3,0.2,0.1 : 1;end"
   [ductile_zeta1]="$fracture;set Crack driver = elastic plus plastic work;set Critical work density = 0;set Driver factor = 1;end;end"
   [ductile]="$fracture;set Crack driver = elastic plus plastic work;set Critical work density = 5e5;set Driver factor = 10;end;end"
   [ductile_zeta30]="$fracture;set Crack driver = elastic plus plastic work;set Critical work density = 5e5;set Driver factor = 30;end;end"
 )
 order=(paper eta_p_half eta_f_half ductile_zeta1 ductile ductile_zeta30 dt_half
-       clamp_refined)
+       clamp_refined block_refined)
 
 parallel=1
 if [[ "${1:-}" == "-j" ]]; then
