@@ -16,14 +16,14 @@ export OMPI_MCA_mpi_yield_when_idle=1 OPENBLAS_NUM_THREADS=1
 
 # scene -> end time of the comparison ("" = the scene's own).
 declare -A end_time=(
-  [block_on_plate]=40      # contact, friction, the plate yields from 31
+  [block_on_plate]=34      # contact, friction, the plate yields from 31
   [box_compression]=""
   [ductile_notch]=0.34     # yield and the crack at the notch (s to 0.9)
   [gmsh_distorted_cube]=""
   [hertz_sphere]=0.25      # the first of 4 steps (126k unknowns)
   [ironing]=""
   [necking_bar]=""
-  [sent]=0.1               # the elastic start (fine mesh)
+  [sent]=0.02              # the elastic start (fine mesh, ~160k unknowns)
   [sent_coarse]=0.7        # the crack runs through (s to 0.9)
   [two_bodies]=40          # contact and friction, 6 mm
   [two_bodies_no_contact]=""
