@@ -20,7 +20,8 @@ rows, failures = [], []
 for scene in sorted(os.listdir(runs)) if os.path.isdir(runs) else []:
     def path(np, name):
         return os.path.join(runs, scene, "np%d" % np, name)
-    if not os.path.isfile(path(2, "statistics")):
+    if (not os.path.isfile(path(2, "statistics")) or
+            wall_time(path(2, "screen.txt")) is None):
         continue
     stats = read_statistics(path(2, "statistics"))
     screen = open(path(2, "screen.txt")).read()
@@ -34,6 +35,10 @@ for scene in sorted(os.listdir(runs)) if os.path.isdir(runs) else []:
                 diffs.append("not run")
             continue
         w = wall_time(path(np, "screen.txt"))
+        if w is None:
+            walls.append("-"), its.append("-")
+            diffs.append("not finished")
+            continue
         walls.append("%.0f" % w if w else "stopped")
         its.append("%d" % sum(r["newton_iterations"]
                               for r in read_statistics(path(np, "statistics"))))
@@ -58,6 +63,13 @@ with open(os.path.join(here, "results.md"), "w") as out:
               "Newton its 1 / 2 / 3 | 1 rank vs 2: largest difference | "
               "3 ranks vs 2 |\n|---|---|---|---|---|---|---|---|\n")
     out.write("\n".join(rows) + "\n\n")
+    shipped = sorted(f[:-4] for f in os.listdir(os.path.join(here, "..", "..", "prm"))
+                     if f.endswith(".prm"))
+    done = [r.split("`")[1] for r in rows]
+    missing = [s for s in shipped if s not in done]
+    if missing:
+        out.write("Not run yet (or not finished on 2 ranks): %s.\n\n"
+                  % ", ".join("`%s`" % m for m in missing))
     out.write("Differences in units of the column's scale (the largest value "
               "of its kind in the 2-rank table); every column but timings and "
               "iteration counts. Allowed: 1e-6 (contact pressures 1e-5, "
