@@ -627,15 +627,13 @@ namespace DuctileContact
                         << ", while t advanced by less than 1e-3 of the time "
                            "step ('Load stepping/Maximum failures without "
                            "progress'); the last failure: "
-                        << report.failure << " at t = " << t
-                        << ". Results up to this time are in '"
-                        << parameters.output.directory << "'." << std::endl;
+                        << report.failure;
                 else
                   pcout << "Error: the load step would have to be smaller "
                            "than 'Load stepping/Minimum time step' = "
-                        << ls.minimum_time_step << " at t = " << t
-                        << ". Results up to this time are in '"
-                        << parameters.output.directory << "'." << std::endl;
+                        << ls.minimum_time_step;
+                pcout << " at t = " << t << ". Results up to this time are in '"
+                      << parameters.output.directory << "'." << std::endl;
                 if (Utilities::MPI::this_mpi_process(comm) == 0)
                   linear_solver->print_summary(pcout.get_stream());
                 return gave_up;
