@@ -244,6 +244,10 @@ namespace DuctileContact
     bool
     invalidates(const std::string &entry)
     {
+      // The checkpoint holds the adapted mesh; the criteria only steer
+      // further refinement.
+      if (entry.rfind("Mesh/Adaptive refinement/", 0) == 0)
+        return false;
       for (const char *prefix : {"Mesh/",
                                  "Finite elements/",
                                  "Bodies/",

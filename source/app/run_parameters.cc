@@ -209,11 +209,45 @@ namespace DuctileContact
                       "the contact tractions); or Coupling/Strategy = "
                       "monolithic");
       }
+    check_adaptive_refinement();
     load_stepping.check();
     newton.check();
     coupling.check();
     linear_solver.check();
     output.check();
+  }
+
+
+
+  void
+  RunParameters::check_adaptive_refinement() const
+  {
+    const auto &a = mesh.adaptive;
+    if (!a.enabled)
+      return;
+    const std::string prefix = "Mesh/Adaptive refinement/";
+    const auto        any    = [&](bool BodyParameters::*field) {
+      return std::any_of(bodies.begin(),
+                         bodies.end(),
+                         [&](const BodyParameters &b) { return b.*field; });
+    };
+    check_input(a.phase_field_threshold == 0. || any(&BodyParameters::fracture),
+                prefix + "Phase-field threshold",
+                Utilities::to_string(a.phase_field_threshold),
+                "0 when no body has Fracture = true (there is no s)");
+    check_input(a.hardening_threshold == 0. || any(&BodyParameters::plasticity),
+                prefix + "Hardening threshold",
+                Utilities::to_string(a.hardening_threshold),
+                "0 when no body has Plasticity = true (there is no alpha)");
+    // The contact state is kept per surface node and the surfaces are
+    // built once: a refined contact face would need both carried over.
+    check_input(contact_pairs.empty(),
+                prefix + "Enabled",
+                "true",
+                "false in a scene with contact pairs (adaptive refinement "
+                "does not carry the contact state to refined contact "
+                "surfaces yet; refine there with Mesh/Local refinement "
+                "boxes)");
   }
 
 

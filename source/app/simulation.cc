@@ -20,6 +20,7 @@
 #include <boost/archive/binary_oarchive.hpp>
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 namespace DuctileContact
@@ -87,15 +88,10 @@ namespace DuctileContact
     std::map<types::material_id, BodyFields> fields;
     for (const BodyParameters &b : parameters.bodies)
       fields[b.material_id] = BodyFields{b.plasticity, b.fracture};
-    {
-      TimerOutput::Scope scope(timer, "setup: dofs");
-      discretisation = std::make_unique<Discretisation>(triangulation,
-                                                        parameters.fe_degree,
-                                                        fields);
-      discretisation->setup();
-      probes = std::make_unique<ProbePoints>(parameters.output.probe_points);
-      probes->setup(*discretisation);
-    }
+    discretisation = std::make_unique<Discretisation>(triangulation,
+                                                      parameters.fe_degree,
+                                                      fields);
+    probes = std::make_unique<ProbePoints>(parameters.output.probe_points);
 
     // Force scale of the absolute Newton tolerance: mu_max * diameter^2.
     Point<dim> lo, hi;
@@ -123,18 +119,10 @@ namespace DuctileContact
                                         parameters.coupling.crack_history());
     linear_solver =
       std::make_unique<LinearSolver>(parameters.linear_solver, *discretisation);
-    {
-      TimerOutput::Scope scope(timer, "setup: rigid-body modes");
-      linear_solver->setup();
-    }
     if (!parameters.contact_pairs.empty())
-      {
-        TimerOutput::Scope scope(timer, "setup: contact surfaces");
-        contact = std::make_unique<ContactProblem>(parameters.contact_pairs,
-                                                   *discretisation,
-                                                   bodies);
-        contact->setup();
-      }
+      contact = std::make_unique<ContactProblem>(parameters.contact_pairs,
+                                                 *discretisation,
+                                                 bodies);
     problem =
       std::make_unique<CoupledProblem>(*discretisation,
                                        *assembler,
@@ -145,7 +133,6 @@ namespace DuctileContact
                                        verbose_out,
                                        timer,
                                        contact.get());
-    problem->setup();
     newton = std::make_unique<NewtonSolver>(parameters.newton,
                                             *linear_solver,
                                             NewtonMonitor{verbose_out, timer});
@@ -155,6 +142,50 @@ namespace DuctileContact
                                               parameters.output.format,
                                               *discretisation,
                                               bodies);
+
+    if (parameters.mesh.adaptive.enabled)
+      adaptation = std::make_unique<MeshAdaptation>(parameters.mesh.adaptive,
+                                                    triangulation,
+                                                    *discretisation);
+    setup_dofs();
+
+    const auto        &n = discretisation->dofs_per_block;
+    std::ostringstream body_list;
+    for (const BodyParameters &b : parameters.bodies)
+      body_list << (b.material_id == parameters.bodies.front().material_id
+                      ? ""
+                      : ", ")
+                << b.name << " (id " << static_cast<unsigned>(b.material_id)
+                << ")";
+    pcout << "Mesh: " << triangulation.n_global_active_cells() << " cells on "
+          << Utilities::MPI::n_mpi_processes(comm)
+          << " MPI rank(s); bodies: " << body_list.str() << std::endl
+          << "DoFs: " << discretisation->dof_handler.n_dofs() << " (u "
+          << n[Block::displacement] << ", alpha " << n[Block::hardening]
+          << ", s " << n[Block::phase_field] << "), FE_Q("
+          << parameters.fe_degree << ")" << std::endl;
+  }
+
+
+
+  void
+  Simulation::setup_dofs()
+  {
+    {
+      TimerOutput::Scope scope(timer, "setup: dofs");
+      discretisation->setup();
+      probes->setup(*discretisation);
+    }
+    {
+      TimerOutput::Scope scope(timer, "setup: rigid-body modes");
+      linear_solver->setup();
+    }
+    if (contact)
+      {
+        TimerOutput::Scope scope(timer, "setup: contact surfaces");
+        contact->setup();
+      }
+    problem->setup();
 
     for (auto *v : {&u, &internal_force, &last_increment})
       v->reinit(discretisation->owned_partitioning, comm);
@@ -184,22 +215,6 @@ namespace DuctileContact
             }
         boundary_dofs.push_back(per_component);
       }
-
-    const auto        &n = discretisation->dofs_per_block;
-    std::ostringstream body_list;
-    for (const BodyParameters &b : parameters.bodies)
-      body_list << (b.material_id == parameters.bodies.front().material_id
-                      ? ""
-                      : ", ")
-                << b.name << " (id " << static_cast<unsigned>(b.material_id)
-                << ")";
-    pcout << "Mesh: " << triangulation.n_global_active_cells() << " cells on "
-          << Utilities::MPI::n_mpi_processes(comm)
-          << " MPI rank(s); bodies: " << body_list.str() << std::endl
-          << "DoFs: " << discretisation->dof_handler.n_dofs() << " (u "
-          << n[Block::displacement] << ", alpha " << n[Block::hardening]
-          << ", s " << n[Block::phase_field] << "), FE_Q("
-          << parameters.fe_degree << ")" << std::endl;
   }
 
 
@@ -401,6 +416,8 @@ namespace DuctileContact
         statistics.add("contact_augmentations", report.augmentations);
       }
     add_solver_columns(report, cutbacks);
+    if (adaptation)
+      add_mesh_columns();
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       statistics.write();
   }
@@ -601,11 +618,20 @@ namespace DuctileContact
     const unsigned int interval            = parameters.output.interval;
     const unsigned int checkpoint_interval = parameters.checkpoint.interval;
     const ProgressLine progress(pcout, T, n_steps);
+    // Adaptive refinement: the converged trial state of a step whose
+    // mesh was refined (the next attempt's initial guess), and how often
+    // the step has been refined.
+    std::optional<TrilinosWrappers::MPI::BlockVector> refined_trial;
     while (t < T - eps)
       {
         const double dt_try = controller.next_increment(t);
         const TrilinosWrappers::MPI::BlockVector u_old = u;
-        if (ls.predictor == Predictor::linear && last_dt > 0.)
+        if (refined_trial)
+          {
+            u = *refined_trial;
+            refined_trial.reset();
+          }
+        else if (ls.predictor == Predictor::linear && last_dt > 0.)
           u.add(dt_try / last_dt, last_increment);
         const StepData   step_data{t + dt_try, dt_try, &old_solution, &history};
         const StepReport report = solver->solve_step(step_data, u);
@@ -641,6 +667,22 @@ namespace DuctileContact
             continue;
           }
 
+        if (adaptation && refinements < parameters.mesh.adaptive.maximum_passes)
+          {
+            TrilinosWrappers::MPI::BlockVector trial = u;
+            if (adapt_mesh(trial))
+              {
+                ++refinements;
+                pcout << "  step " << step + 1 << " at t = " << t + dt_try
+                      << ": mesh refined (pass " << refinements << "), "
+                      << triangulation.n_global_active_cells() << " cells, "
+                      << discretisation->dof_handler.n_dofs()
+                      << " DoFs; solving the step again" << std::endl;
+                refined_trial = std::move(trial);
+                continue;
+              }
+          }
+
         t += dt_try;
         ++step;
         last_increment = u;
@@ -649,6 +691,7 @@ namespace DuctileContact
         accept_step(step_data, u_old);
         record_step(step, t, dt_try, report, controller.cutbacks());
         controller.accept(dt_try, report.iterations);
+        refinements = 0;
 
         const bool stop = stop_requested(comm);
         const bool last = t >= T - eps;

@@ -40,6 +40,48 @@ namespace DuctileContact
       "Empty: no local refinement.",
       Patterns::Anything());
 
+    prm.enter_subsection("Adaptive refinement");
+    prm.add_parameter(
+      "Enabled",
+      adaptive.enabled,
+      "Refine the mesh during the run where s or alpha exceed the "
+      "thresholds below (doc/input.md, 'Adaptive refinement'): after a "
+      "converged load step the cells are flagged; if any are, the state of "
+      "the last accepted step is carried to the refined mesh and the step "
+      "is solved again, until nothing is flagged or Maximum passes per "
+      "step is reached. Cells are never coarsened. Not with contact pairs.");
+    prm.add_parameter(
+      "Phase-field threshold",
+      adaptive.phase_field_threshold,
+      "A cell is refined where s exceeds this value at one of its DoFs "
+      "[-]; 0: s does not refine.",
+      Patterns::Double(0., 1.));
+    prm.add_parameter(
+      "Hardening threshold",
+      adaptive.hardening_threshold,
+      "A cell is refined where the hardening variable alpha exceeds this "
+      "value at one of its DoFs [-]; 0: alpha does not refine.",
+      Patterns::Double(0.));
+    prm.add_parameter("Maximum level",
+                      adaptive.maximum_level,
+                      "Cells are refined up to this level; the coarse mesh "
+                      "(before Global refinements) is level 0.",
+                      Patterns::Integer(0, 12));
+    prm.add_parameter(
+      "Maximum cells",
+      adaptive.maximum_cells,
+      "No refinement that would make more than this many cells (each "
+      "refined cell adds 7); when the flagged cells would, those with the "
+      "largest s (or alpha) relative to its threshold are refined. 0: no "
+      "limit.",
+      Patterns::Integer(0));
+    prm.add_parameter("Maximum passes per step",
+                      adaptive.maximum_passes,
+                      "How often one load step may be refined and solved "
+                      "again before it is accepted on the mesh it has.",
+                      Patterns::Integer(1, 20));
+    prm.leave_subsection();
+
     prm.enter_subsection("Box");
     prm.add_parameter("Lower corner",
                       box.lower_corner,
@@ -208,6 +250,14 @@ namespace DuctileContact
                       "every coordinate");
         refinement_boxes.push_back(b);
       }
+
+    if (adaptive.enabled)
+      check_input(adaptive.phase_field_threshold > 0. ||
+                    adaptive.hardening_threshold > 0.,
+                  "Mesh/Adaptive refinement/Enabled",
+                  "true",
+                  "a Phase-field threshold or a Hardening threshold above 0 "
+                  "(what the refinement follows)");
 
     if (scene == SceneType::box)
       for (unsigned int d = 0; d < dim; ++d)

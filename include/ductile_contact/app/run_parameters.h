@@ -66,6 +66,10 @@ namespace DuctileContact
     void
     check();
 
+    /// Mesh/Adaptive refinement against the bodies and contact pairs.
+    void
+    check_adaptive_refinement() const;
+
     std::vector<unsigned int> material_ids{0};
     std::vector<unsigned int> boundary_ids;
     std::vector<unsigned int> contact_pair_numbers;

@@ -12,6 +12,7 @@
 #include <ductile_contact/assembly/quadrature_history.h>
 #include <ductile_contact/assembly/system_assembler.h>
 #include <ductile_contact/discretisation/discretisation.h>
+#include <ductile_contact/discretisation/mesh_adaptation.h>
 #include <ductile_contact/output/probe_points.h>
 #include <ductile_contact/output/statistics.h>
 #include <ductile_contact/output/tee_stream.h>
@@ -71,6 +72,31 @@ namespace DuctileContact
   private:
     void
     setup();
+    /// Distributes the DoFs and sizes everything that depends on them:
+    /// once in setup() and after every refinement of the mesh.
+    void
+    setup_dofs();
+    /// The corrector of adaptive refinement: flags cells by the converged
+    /// trial state @p trial of the step that starts from the accepted
+    /// state; if any are flagged, refines them and carries the accepted
+    /// state (u, the quadrature-point history, the last increment) to the
+    /// new mesh, and @p trial with it (the next attempt's initial guess);
+    /// the last force is assembled anew. Returns whether the mesh changed.
+    bool
+    adapt_mesh(dealii::TrilinosWrappers::MPI::BlockVector &trial);
+    /// After a transfer: the force of the last accepted step (the
+    /// trapezoidal rule of the external work) assembled on the new mesh.
+    void
+    accepted_force_on_new_mesh();
+    /// The columns cells, dofs and refinements (of the step) of an
+    /// adaptive run.
+    void
+    add_mesh_columns();
+    /// After a transfer: alpha_n of the history at each point set to the
+    /// carried alpha field of #old_solution there (>= 0), the value the
+    /// commit of an accepted step would have given it.
+    void
+    align_hardening_history();
     /// The coarse mesh and, when resuming, the checkpoint's refined mesh.
     void
     create_mesh();
@@ -147,7 +173,13 @@ namespace DuctileContact
     std::unique_ptr<NewtonSolver>                                newton;
     std::unique_ptr<CoupledSolver>                               solver;
     std::unique_ptr<SolutionWriter>                              writer;
-    Statistics                                                   statistics;
+    /// Mesh/Adaptive refinement (null when off).
+    std::unique_ptr<MeshAdaptation> adaptation;
+    /// Whether Maximum cells has held back refinement (noted once).
+    bool cell_limit_noted = false;
+    /// Refinements of the current load step so far.
+    unsigned int refinements = 0;
+    Statistics   statistics;
 
     /// Owned DoFs of each constrained component on each boundary with
     /// conditions (empty for the other components).

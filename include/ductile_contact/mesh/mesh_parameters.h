@@ -103,6 +103,24 @@ namespace DuctileContact
       std::string file_name;
     } gmsh;
 
+    /// Subsection `Adaptive refinement`: cells refined during the run
+    /// where the crack or the plastic zone calls for it (MeshAdaptation).
+    struct AdaptiveRefinement
+    {
+      bool enabled = false;
+      /// Refine where s exceeds it at a DoF of the cell; 0: not by s.
+      double phase_field_threshold = 0.;
+      /// Refine where alpha exceeds it at a DoF of the cell; 0: not by
+      /// alpha.
+      double hardening_threshold = 0.;
+      /// Cells are refined up to this level (the coarse mesh is level 0).
+      unsigned int maximum_level = 3;
+      /// No refinement beyond this many cells (0: no limit).
+      unsigned int maximum_cells = 0;
+      /// Refinements of one load step before it is accepted.
+      unsigned int maximum_passes = 4;
+    } adaptive;
+
     void
     declare(dealii::ParameterHandler &prm);
 
