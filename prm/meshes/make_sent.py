@@ -21,7 +21,11 @@ Physical tags: volume 1 (the specimen); surfaces 1 bottom (y = 0), 2 top
 (y = HEIGHT), 3 the slab faces z = 0 and z = t, 4 the left and right edges
 and the slit faces (traction free).
 
-Usage: make_sent.py H BAND OUTPUT.msh [XEND [HEIGHT]]
+THICKNESS (default H) sets the slab's thickness: a coarse mesh for
+adaptive refinement has flat cells (H/THICKNESS = 2^levels), which become
+cubes one layer thick at the finest level.
+
+Usage: make_sent.py H BAND OUTPUT.msh [XEND [HEIGHT [THICKNESS]]]
        (e.g. make_sent.py 0.0075 0.05 sent.msh)
 """
 import sys
@@ -35,7 +39,7 @@ x_end = float(sys.argv[4]) if len(sys.argv) > 4 else 1.0
 height = float(sys.argv[5]) if len(sys.argv) > 5 else 1.0
 y_mid = 0.5 * height
 mm = 1e-3
-thickness = h
+thickness = float(sys.argv[6]) if len(sys.argv) > 6 else h
 
 
 def graded(a, b, h_fine, fine_from_a):

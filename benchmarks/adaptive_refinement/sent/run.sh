@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# Issue #28: notched tension at l_f = 0.0075 mm (prm/sent.prm's length) with
+# adaptive refinement from a coarse mesh, against the mesh refined by hand
+# along the crack path (benchmarks/phase_field/sent, results_lf0.0075.md:
+# h = l_f/2 in a square of half-width 6 l_f around the notch tip, 143k
+# unknowns). Same material, loading, solver and load steps (eta_f = 0,
+# monolithic, MUMPS, dt = 0.05 with cut-backs to dt/8, to t = 0.48, one step
+# past the peak).
+# The coarse mesh has h = 0.06 mm = 8 l_f in the plane and is one flat layer
+# of 0.00375 mm = l_f/2 (make_sent.py's THICKNESS): Maximum level 4 makes
+# cubes of h = l_f/2 one layer thick where s exceeds the threshold, level 5
+# cubes of l_f/4 in two layers.
+# Usage: benchmarks/adaptive_refinement/sent/run.sh [NP] [RUN ...]
+#   RUN: names as in runs/ (e.g. level4-s0.05); default all. Runs whose
+#   statistics are complete are kept. Then report.py writes results.md and
+#   sent_adaptive.png.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/../../../scripts/env.sh"
+np=${1:-2}
+only=("${@:2}")
+require_build
+mkdir -p "$here/runs"
+mesh=$here/runs/sent_coarse_h0.06_t0.00375.msh
+[[ -f "$mesh" ]] || /usr/bin/python3 "$project_root/prm/meshes/make_sent.py" \
+  0.06 0.12 "$mesh" 0.98 1 0.00375 > /dev/null
+
+run() { # level threshold
+  local level=$1 threshold=$2 name dir
+  name="level$level-s$threshold"
+  if ((${#only[@]})) && [[ " ${only[*]} " != *" $name "* ]]; then return; fi
+  dir=$here/runs/$name
+  if run_finished "$dir"; then
+    echo "== $name (done)"
+    return
+  fi
+  mkdir -p "$dir"
+  sed -e "s|@MESH@|$mesh|" -e "s|@LF@|7.5e-06|" -e "s|@DEGREE@|2|" \
+    -e "s|@STRATEGY@|monolithic|" -e "s|@DEPTH@|0|" -e "s|@SOLVER@|direct|" \
+    -e "s|@PFPREC@|amg|" -e "s|@DT@|0.05|" -e "s|@DTMIN@|0.00625|" \
+    -e "s|@END@|0.48|" -e "s|@ETA@|0|" -e "s|@DIR@|$dir|" \
+    "$project_root/benchmarks/phase_field/sent/scene.prm.in" > "$dir/scene.prm"
+  cat >> "$dir/scene.prm" <<PRM
+subsection Mesh
+  subsection Adaptive refinement
+    set Enabled                 = true
+    set Phase-field threshold   = $threshold
+    set Maximum level           = $level
+    set Maximum passes per step = 6
+  end
+end
+PRM
+  echo "== $name ($(date +%H:%M))"
+  run_scene "$np" "$dir"
+  grep -E "Total wallclock" "$dir/screen.txt" || true
+}
+
+run 4 0.05
+run 4 0.2
+run 5 0.05
+/usr/bin/python3 "$here/report.py"
