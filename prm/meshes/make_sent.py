@@ -21,9 +21,9 @@ Physical tags: volume 1 (the specimen); surfaces 1 bottom (y = 0), 2 top
 (y = HEIGHT), 3 the slab faces z = 0 and z = t, 4 the left and right edges
 and the slit faces (traction free).
 
-THICKNESS (default H) sets the slab's thickness: a coarse mesh for
-adaptive refinement has flat cells (H/THICKNESS = 2^levels), which become
-cubes one layer thick at the finest level.
+THICKNESS (default H) sets the slab's thickness (one element layer). For
+adaptive refinement note that every refinement halves a cell in all three
+directions: a cell refined L times is 2^L layers thick.
 
 Usage: make_sent.py H BAND OUTPUT.msh [XEND [HEIGHT [THICKNESS]]]
        (e.g. make_sent.py 0.0075 0.05 sent.msh)

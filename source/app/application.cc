@@ -234,6 +234,10 @@ namespace DuctileContact
       for (const RefinementBox &box : parameters.mesh.refinement_boxes)
         boxes = std::max(boxes, box.levels);
       levels += boxes;
+      // Adaptive refinement by s takes the crack's cells to Maximum level.
+      const auto &adaptive = parameters.mesh.adaptive;
+      if (adaptive.enabled && adaptive.phase_field_threshold > 0.)
+        levels = std::max(levels, adaptive.maximum_level);
 
       std::vector<std::string> warnings;
       for (const BodyParameters &body : parameters.bodies)
@@ -262,8 +266,9 @@ namespace DuctileContact
             << parameters.fe_degree << ") nodes " << spacing
             << " m apart. The crack band (about 4 l_f wide) is not resolved: "
                "the crack energy and the force at which it grows depend on "
-               "the mesh. Refine (Mesh/Global refinements or Local refinement "
-               "boxes) until the node spacing is at most l_f.";
+               "the mesh. Refine (Mesh/Global refinements, Local refinement "
+               "boxes or Adaptive refinement/Maximum level) until the node "
+               "spacing is at most l_f.";
           warnings.push_back(w.str());
         }
       return warnings;
