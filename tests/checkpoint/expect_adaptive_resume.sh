@@ -1,0 +1,123 @@
+#!/usr/bin/env bash
+# Usage: expect_adaptive_resume.sh MPIEXEC EXECUTABLE MESH.msh (in a scratch
+# folder)
+# Issue #28 item 3: a checkpoint holds an adapted mesh. Coarse notched
+# tension (tests/adaptive_refinement's scene: MESH.msh with h = 2 l_f,
+# refined where s > 0.05 up to level 1), 9 steps; the mesh is refined in
+# steps 4, 7 and 8. Passes when
+#  1. the run on 1 rank, checkpointed every step and ended at step 5 (after
+#     the first refinement), resumed on 3 ranks to the end, refines in the
+#     same steps and gives the statistics of the uninterrupted 2-rank run
+#     (every column but the timings and iteration counts, to 1e-6 of its
+#     scale: compare_statistics.py), and
+#  2. a resume may change the refinement entries (Phase-field threshold
+#     0.05 -> 0.02: the resumed run names the change and refines more cells
+#     in step 6 than the 100 the uninterrupted run has).
+set -u
+mpiexec=$1 exe=$2 mesh=$3
+here=$(cd "$(dirname "$0")" && pwd)
+if [[ $(id -u) -eq 0 ]]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+fi
+export OMPI_MCA_btl_vader_single_copy_mechanism=none OPENBLAS_NUM_THREADS=1
+export OMPI_MCA_mpi_yield_when_idle=1
+fail() { echo "FAIL: $*"; exit 1; }
+
+# scene NAME END_TIME CHECKPOINT_INTERVAL DIRECTORY [THRESHOLD]
+scene() {
+  cat > "$1.prm" <<EOT
+subsection Mesh
+  set Scene = gmsh
+  subsection Gmsh
+    set File name = $mesh
+  end
+  subsection Adaptive refinement
+    set Enabled               = true
+    set Phase-field threshold = ${5:-0.05}
+    set Maximum level         = 1
+  end
+end
+subsection Bodies
+  set Material ids = 1
+end
+subsection Body 1
+  set Shear modulus = 80.77e9
+  set Bulk modulus  = 175.0e9
+  set Fracture      = true
+  subsection Fracture
+    set Critical energy release rate = 2700
+    set Length scale                 = 1e-4
+  end
+end
+subsection Boundary conditions
+  set Boundary ids = 1, 2, 3
+end
+subsection Boundary 1
+  set Constrained components = x, y, z
+end
+subsection Boundary 2
+  set Constrained components = x, y, z
+  set Displacement           = 0; 1e-5*t; 0
+end
+subsection Boundary 3
+  set Constrained components = z
+end
+subsection Load stepping
+  set End time          = $2
+  set Time step         = 0.05
+  set Minimum time step = 0.00625
+end
+subsection Newton
+  set Relative tolerance = 1e-9
+end
+subsection Output
+  set Interval  = 1
+  set Directory = $4
+end
+subsection Checkpoint
+  set Interval = $3
+end
+EOT
+}
+run() { # NP PRM [--resume]; screen output in PRM.log
+  local np=$1 prm=$2 start=$SECONDS code
+  shift 2
+  "$mpiexec" --oversubscribe -np "$np" "$exe" "$@" "$prm" > "${prm%.prm}.log" 2>&1
+  code=$?
+  echo "$prm $* on $np rank(s): exit code $code, $((SECONDS - start)) s"
+  return $code
+}
+refined_steps() { # the steps of DIR/statistics whose refinements column is > 0
+  awk 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "refinements") c = i; next }
+       $c > 0 { printf "%d ", $1 }' "$1/statistics"
+}
+rm -rf full part deeper ./*.prm ./*.log
+
+scene full 0.45 0 full
+run 2 full.prm || fail "the uninterrupted run failed"
+[[ $(refined_steps full) == "4 7 8 " ]] ||
+  fail "refined in steps $(refined_steps full), expected 4 7 8"
+
+# 1. Checkpointed on 1 rank up to step 5, resumed on 3 ranks.
+scene part 0.25 1 part
+run 1 part.prm || fail "the run up to step 5 failed"
+[[ $(cat part/checkpoints/last) == step_000005 ]] || fail "no checkpoint of step 5"
+scene part_resume 0.45 1 part
+run 3 part_resume.prm --resume || fail "the resume (1 -> 3 ranks) failed"
+grep -q "step_000005" part_resume.log || fail "the resume does not name its checkpoint"
+[[ $(refined_steps part) == "4 7 8 " ]] ||
+  fail "the resumed run refined in steps $(refined_steps part)"
+python3 "$here/compare_statistics.py" full/statistics part/statistics ||
+  fail "checkpointed on an adapted mesh, resumed 1 -> 3"
+
+# 2. The refinement entries may change on a resume.
+scene deeper 0.25 1 deeper
+run 2 deeper.prm || fail "the run up to step 5 failed"
+scene deeper_resume 0.3 1 deeper 0.02
+run 1 deeper_resume.prm --resume || fail "the resume with another threshold was refused"
+grep -q "Phase-field threshold: 0.05 -> 0.02" deeper_resume.log ||
+  fail "the taken change is not named"
+awk 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "cells") c = i; next }
+     { n = $c } END { exit !(n > 100) }' deeper/statistics ||
+  fail "the threshold 0.02 did not refine more than 0.05 (100 cells)"
+echo PASS
