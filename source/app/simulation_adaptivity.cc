@@ -6,6 +6,8 @@
 #include <ductile_contact/coupled/coupled_problem.h>
 #include <ductile_contact/output/solution_writer.h>
 
+#include <stdexcept>
+
 namespace DuctileContact
 {
   using namespace dealii;
@@ -86,8 +88,8 @@ namespace DuctileContact
     targets.internal_force = &energy.last_force();
     assembler->assemble(old_solution,
                         {t,
-                         last_dt > 0. ? last_dt :
-                                        parameters.load_stepping.time_step,
+                         last_dt > 0. ? last_dt
+                                      : parameters.load_stepping.time_step,
                          &old_solution,
                          &history},
                         discretisation->hanging_node_constraints,
@@ -102,9 +104,8 @@ namespace DuctileContact
     statistics.add("cells",
                    static_cast<unsigned int>(
                      triangulation.n_global_active_cells()));
-    statistics.add("dofs",
-                   static_cast<unsigned int>(
-                     discretisation->dof_handler.n_dofs()));
+    statistics.add(
+      "dofs", static_cast<unsigned int>(discretisation->dof_handler.n_dofs()));
     statistics.add("refinements", refinements);
   }
 

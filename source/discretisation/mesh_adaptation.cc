@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 
 namespace DuctileContact
 {
@@ -44,7 +45,8 @@ namespace DuctileContact
       : parameters(parameters)
       , tria(tria)
       , discretisation(d)
-  {}
+  {
+  }
 
 
 
@@ -55,7 +57,7 @@ namespace DuctileContact
     const LocalDofs &dofs = discretisation.local_dofs(cell->active_fe_index());
     dealii::Vector<double> values(cell->get_fe().n_dofs_per_cell());
     cell->get_dof_values(u, values);
-    double eta = 0.;
+    double     eta     = 0.;
     const auto largest = [&](const std::vector<unsigned int> &indices,
                              const double                     threshold) {
       if (threshold > 0.)
@@ -84,7 +86,7 @@ namespace DuctileContact
             candidates.emplace_back(eta, cell);
         }
 
-    Flags flags;
+    Flags      flags;
     const auto n_candidates =
       Utilities::MPI::sum<unsigned int>(candidates.size(), comm);
     // The smallest eta_K that is refined (all candidates without a limit).
@@ -92,9 +94,9 @@ namespace DuctileContact
     if (parameters.maximum_cells > 0)
       {
         const std::size_t cells   = tria.n_global_active_cells();
-        const std::size_t room    = parameters.maximum_cells > cells ?
-                                      parameters.maximum_cells - cells :
-                                      0;
+        const std::size_t room    = parameters.maximum_cells > cells
+                                      ? parameters.maximum_cells - cells
+                                      : 0;
         const std::size_t allowed = room / 7;
         if (n_candidates > allowed)
           {
@@ -105,8 +107,8 @@ namespace DuctileContact
             for (const auto &part : Utilities::MPI::all_gather(comm, mine))
               all.insert(all.end(), part.begin(), part.end());
             std::sort(all.begin(), all.end(), std::greater<double>());
-            cut = allowed == 0 ? std::numeric_limits<double>::infinity() :
-                                 all[allowed - 1];
+            cut = allowed == 0 ? std::numeric_limits<double>::infinity()
+                               : all[allowed - 1];
           }
       }
     unsigned int flagged = 0;
@@ -131,7 +133,7 @@ namespace DuctileContact
                          const std::function<void()>       &redistribute,
                          const std::vector<Vector *>       &owned)
   {
-    using Records = std::vector<double>;
+    using Records      = std::vector<double>;
     const auto nearest = nearest_parent_points(quadrature);
     const auto inject  = [&](const Triangulation<dim>::cell_iterator &,
                             const Records &parent) {

@@ -42,6 +42,10 @@ namespace DuctileContact
    * Reaction forces are sums of f_int (condensed with the hanging-node
    * constraints) over the DoFs a boundary constrains.
    *
+   * With Mesh/Adaptive refinement, a converged step is first offered to
+   * MeshAdaptation: if it refines the mesh, the accepted state is carried
+   * over and the step is solved again (adapt_mesh(), predictor-corrector).
+   *
    * Every Checkpoint/Interval accepted steps, and when a SIGTERM or SIGINT
    * arrived during a step, the state is written to a Checkpoint; a run
    * constructed with a checkpoint folder continues from it.
