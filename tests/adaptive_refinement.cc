@@ -9,8 +9,8 @@
 //    the new mesh (an interpolated nodal force would count the new nodes
 //    of the face twice), the plastic work and hardening energy that the
 //    quadrature-point history arrives on the children, and the step
-//    counts that the
-//    corrector redoes a step without a trace of the first attempt. To 1e-7
+//    counts that the corrector redoes a step without a trace of the first
+//    attempt. To 1e-7
 //    of each column's scale (energies: of the external work): the
 //    statistics carry 9 digits, and the runs solve to 1e-10 and 1e-11.
 //  - Notched tension (coarse, as tests/sent_notch with l_f = 0.1 mm): from
@@ -34,8 +34,8 @@ namespace
 subsection Mesh
   subsection Adaptive refinement
     set Enabled = true
-    set )" + threshold_entry +
-           " = " + Utilities::to_string(threshold) + R"(
+    set )" +
+           threshold_entry + " = " + Utilities::to_string(threshold) + R"(
     set Maximum level = )" +
            std::to_string(maximum_level) + R"(
   end
@@ -98,15 +98,14 @@ end
     double worst = 0;
     for (const std::string &name : names)
       {
-        const bool energy =
-          name.find("energy") != std::string::npos ||
-          name.find("work") != std::string::npos;
+        const bool energy = name.find("energy") != std::string::npos ||
+                            name.find("work") != std::string::npos;
         double scale = 0;
         for (const double v : a.at(energy ? "external_work" : name))
           scale = std::max(scale, std::abs(v));
         for (unsigned int n = 0; n < a.at(name).size(); ++n)
-          worst = std::max(worst,
-                           std::abs(a.at(name)[n] - b.at(name)[n]) / scale);
+          worst =
+            std::max(worst, std::abs(a.at(name)[n] - b.at(name)[n]) / scale);
       }
     return worst;
   }
@@ -129,15 +128,16 @@ end
                       const std::vector<std::string> &columns,
                       const std::string              &name)
   {
-    const auto fixed   = Testing::run_scene(prm, name + "_fixed");
-    const auto adapted = Testing::run_scene(prm + refinement, name + "_adapted");
+    const auto fixed = Testing::run_scene(prm, name + "_fixed");
+    const auto adapted =
+      Testing::run_scene(prm + refinement, name + "_adapted");
     const double worst = difference(fixed, adapted, columns);
     for (const std::string &c : columns)
       std::cout << what << ": " << c << " differs by "
                 << difference(fixed, adapted, {c}) << std::endl;
-    out << what << ": refined once (8 -> "
-        << adapted.at("cells").back() << " cells, "
-        << sum(adapted.at("refinements")) << " refinement), the same steps and "
+    out << what << ": refined once (8 -> " << adapted.at("cells").back()
+        << " cells, " << sum(adapted.at("refinements"))
+        << " refinement), the same steps and "
         << "the same";
     for (const std::string &c : columns)
       out << " " << c;
@@ -206,16 +206,13 @@ main(int argc, char **argv)
   std::ofstream                    out = Testing::open_output();
   out << std::setprecision(4);
 
-  compare_homogeneous(out,
-                      "cracking bar",
-                      cube_prm(cracking_body, "0.0025*t", 0.025, 1e-10),
-                      adaptive("Phase-field threshold", 0.05, 1),
-                      {"F1_x",
-                       "max_s",
-                       "external_work",
-                       "fracture_energy",
-                       "energy_residual"},
-                      "bar");
+  compare_homogeneous(
+    out,
+    "cracking bar",
+    cube_prm(cracking_body, "0.0025*t", 0.025, 1e-10),
+    adaptive("Phase-field threshold", 0.05, 1),
+    {"F1_x", "max_s", "external_work", "fracture_energy", "energy_residual"},
+    "bar");
   compare_homogeneous(out,
                       "plastic box",
                       cube_prm(plastic_body, "0.02*t", 0.1, 1e-11),
@@ -229,9 +226,9 @@ main(int argc, char **argv)
                       "box");
 
   // Notched tension from h = 2 l_f.
-  const double thickness = 2e-4; // m, the coarse mesh's one layer
-  const auto   sent      = Testing::run_scene(sent_prm(), "sent_adaptive");
-  unsigned int k         = 0;
+  const double thickness    = 2e-4; // m, the coarse mesh's one layer
+  const auto   sent         = Testing::run_scene(sent_prm(), "sent_adaptive");
+  unsigned int k            = 0;
   double       min_s_change = 0;
   for (unsigned int n = 0; n < sent.at("time").size(); ++n)
     {
@@ -240,16 +237,15 @@ main(int argc, char **argv)
       min_s_change = std::min(min_s_change, sent.at("min_s_change")[n]);
     }
   const double peak = sent.at("F2_y")[k] / thickness * 1e-6;
-  out << "notched tension from h = 2 l_f: F_max = " << peak << " kN/mm at u = "
-      << sent.at("u2_y")[k] * 1e3 << " mm, refined "
-      << sum(sent.at("refinements")) << " times to "
-      << sent.at("cells").back() << " cells" << std::endl
+  out << "notched tension from h = 2 l_f: F_max = " << peak
+      << " kN/mm at u = " << sent.at("u2_y")[k] * 1e3 << " mm, refined "
+      << sum(sent.at("refinements")) << " times to " << sent.at("cells").back()
+      << " cells" << std::endl
       << "  F_max of the mesh with h = l_f along the path (0.3524 kN/mm, "
          "1 %): "
       << Testing::yes_no(std::abs(peak - 0.3524) < 0.01 * 0.3524) << std::endl
       << "  s never decreases at any DoF (1e-9): "
       << Testing::yes_no(min_s_change > -1e-9) << std::endl;
-  std::cout << "sent: peak " << peak << " at step " << k
-            << ", min s change " << min_s_change << ", dofs "
-            << sent.at("dofs").back() << std::endl;
+  std::cout << "sent: peak " << peak << " at step " << k << ", min s change "
+            << min_s_change << ", dofs " << sent.at("dofs").back() << std::endl;
 }
