@@ -13,7 +13,8 @@
 //    attempt. To 1e-7
 //    of each column's scale (energies: of the external work): the
 //    statistics carry 9 digits, and the runs solve to 1e-10 and 1e-11.
-//  - Notched tension (coarse, as tests/sent_notch with l_f = 0.1 mm): from
+//  - Notched tension (tests/sent_adaptive.prm, as tests/sent_notch with
+//    l_f = 0.1 mm): from
 //    a mesh of h = 0.2 mm = 2 l_f, refined where s > 0.05 to h = l_f, the
 //    peak force is that of the mesh made with h = l_f along the whole crack
 //    path (0.3524 kN/mm, tests/sent_notch.output) and s never decreases,
@@ -146,56 +147,20 @@ end
     std::cout << what << ": largest difference " << worst << std::endl;
   }
 
+  /// tests/sent_adaptive.prm on its mesh.
   std::string
   sent_prm()
   {
-    return R"(
+    return Testing::file_text(SOURCE_DIR "/sent_adaptive.prm") + R"(
 subsection Mesh
-  set Scene = gmsh
   subsection Gmsh
     set File name = )" SOURCE_DIR R"(/meshes/sent_h2lf.msh
   end
 end
-subsection Bodies
-  set Material ids = 1
-end
-subsection Body 1
-  set Shear modulus = 80.77e9
-  set Bulk modulus  = 175.0e9
-  set Fracture      = true
-  subsection Fracture
-    set Critical energy release rate = 2700
-    set Length scale                 = 1e-4
-  end
-end
-subsection Boundary conditions
-  set Boundary ids = 1, 2, 3
-end
-subsection Boundary 1
-  set Constrained components = x, y, z
-end
-subsection Boundary 2
-  set Constrained components = x, y, z
-  set Displacement           = 0; 1e-5*t; 0
-end
-subsection Boundary 3
-  set Constrained components = z
-end
-subsection Load stepping
-  set End time          = 0.45
-  set Time step         = 0.05
-  set Minimum time step = 0.00625
-end
-subsection Newton
-  set Relative tolerance = 1e-9
-end
-subsection Linear solver
-  set Type = direct
-end
 subsection Output
   set Interval = 0
 end
-)" + adaptive("Phase-field threshold", 0.05, 1);
+)";
   }
 } // namespace
 

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Usage: expect_adaptive_resume.sh MPIEXEC EXECUTABLE MESH.msh (in a scratch
-# folder)
+# Usage: expect_adaptive_resume.sh MPIEXEC EXECUTABLE SCENE.prm MESH.msh (in
+# a scratch folder)
 # Issue #28 item 3: a checkpoint holds an adapted mesh. Coarse notched
-# tension (tests/adaptive_refinement's scene: MESH.msh with h = 2 l_f,
+# tension (SCENE.prm = tests/sent_adaptive.prm on MESH.msh, h = 2 l_f,
 # refined where s > 0.05 up to level 1), 9 steps; the mesh is refined in
 # steps 4, 7 and 8. Passes when
 #  1. the run on 1 rank, checkpointed every step and ended at step 5 (after
@@ -14,7 +14,7 @@
 #     0.05 -> 0.02: the resumed run names the change and refines more cells
 #     in step 6 than the 100 the uninterrupted run has).
 set -u
-mpiexec=$1 exe=$2 mesh=$3
+mpiexec=$1 exe=$2 prm=$3 mesh=$4
 here=$(cd "$(dirname "$0")" && pwd)
 if [[ $(id -u) -eq 0 ]]; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
@@ -25,50 +25,17 @@ fail() { echo "FAIL: $*"; exit 1; }
 
 # scene NAME END_TIME CHECKPOINT_INTERVAL DIRECTORY [THRESHOLD]
 scene() {
-  cat > "$1.prm" <<EOT
+  { cat "$prm"; cat <<EOT
 subsection Mesh
-  set Scene = gmsh
   subsection Gmsh
     set File name = $mesh
   end
   subsection Adaptive refinement
-    set Enabled               = true
     set Phase-field threshold = ${5:-0.05}
-    set Maximum level         = 1
   end
-end
-subsection Bodies
-  set Material ids = 1
-end
-subsection Body 1
-  set Shear modulus = 80.77e9
-  set Bulk modulus  = 175.0e9
-  set Fracture      = true
-  subsection Fracture
-    set Critical energy release rate = 2700
-    set Length scale                 = 1e-4
-  end
-end
-subsection Boundary conditions
-  set Boundary ids = 1, 2, 3
-end
-subsection Boundary 1
-  set Constrained components = x, y, z
-end
-subsection Boundary 2
-  set Constrained components = x, y, z
-  set Displacement           = 0; 1e-5*t; 0
-end
-subsection Boundary 3
-  set Constrained components = z
 end
 subsection Load stepping
-  set End time          = $2
-  set Time step         = 0.05
-  set Minimum time step = 0.00625
-end
-subsection Newton
-  set Relative tolerance = 1e-9
+  set End time = $2
 end
 subsection Output
   set Interval  = 1
@@ -78,6 +45,7 @@ subsection Checkpoint
   set Interval = $3
 end
 EOT
+  } > "$1.prm"
 }
 run() { # NP PRM [--resume]; screen output in PRM.log
   local np=$1 prm=$2 start=$SECONDS code
