@@ -62,9 +62,10 @@ for name, (label, t) in uniform_runs.items():
         runs.append(load(d, label, t))
 for d in sorted(glob.glob(os.path.join(here, "runs", "level*"))):
     if os.path.exists(os.path.join(d, "statistics")):
-        m = re.match(r"level(\d+)-s([\d.]+)", os.path.basename(d))
+        m = re.match(r"level(\d+)-s([\d.]+)(?:-dtmin([\d.e-]+))?$", os.path.basename(d))
         h = {4: "l_f/2", 5: "l_f/4"}.get(int(m.group(1)), "?")
-        runs.append(load(d, f"adaptive, level {m.group(1)} (h = {h}), s > {m.group(2)}",
+        dtmin = f", dt_min = {m.group(3)}" if m.group(3) else ""
+        runs.append(load(d, f"adaptive, level {m.group(1)} (h = {h}), s > {m.group(2)}{dtmin}",
                          adaptive_thickness))
 ref = next((r for r in runs if r["label"] == "by hand, h = l_f/2"), None)
 
