@@ -5,6 +5,9 @@ if [[ $(id -u) -eq 0 ]]; then
 fi
 # One OpenBLAS thread per MPI rank: the ranks already use the cores.
 export OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1
+# Parallel make and ctest jobs: all cores (plain `nproc` obeys OMP_NUM_THREADS
+# and would say 1).
+jobs=$(nproc --all)
 # Open MPI in containers: avoid probing for fast interconnects that are not there.
 export OMPI_MCA_btl_vader_single_copy_mechanism=none
 project_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

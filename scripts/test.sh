@@ -12,5 +12,5 @@ cd "$build_dir"
 # tests/CMakeLists.txt).
 targets=$(make help | sed -n 's/^\.\.\. \(tests\.[A-Za-z0-9_]*\.release\)$/\1/p')
 echo "building $(echo $targets | wc -w) test programs"
-make -j"$(nproc)" $targets > /dev/null
-ctest --output-on-failure -j"$(nproc)" "$@"
+make -j"$jobs" $targets > /dev/null
+ctest --output-on-failure -j"$jobs" "$@"

@@ -5,6 +5,6 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../scripts/env.sh"
-cmake --build "$build_dir" --target phase_field_operator -- -j"$(nproc)" >/dev/null
+cmake --build "$build_dir" --target phase_field_operator -- -j"$jobs" >/dev/null
 "$build_dir/phase_field_operator" | tee "$here/results.txt"
 /usr/bin/python3 "$here/plot.py"
