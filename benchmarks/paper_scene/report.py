@@ -27,6 +27,10 @@ names = {
     "dt_half": "load step halved (0.075 mm)",
     "clamp_refined": "plate refined once at the clamp (x > 0.22 m)",
     "block_refined": "block refined once (10 x 10 x 10 cells)",
+    "clamp_adaptive": "adaptive refinement where alpha > 0.002, at most once "
+                      "(unknowns: at the end)",
+    "clamp_adaptive2": "adaptive refinement where alpha > 0.002, at most "
+                       "twice (unknowns: at the end)",
     "ductile_zeta1": "plastic work driver, w_c = 0, zeta = 1",
     "ductile": "plastic work driver, w_c = 5e5 J/m^3, zeta = 10",
     "ductile_zeta30": "plastic work driver, w_c = 5e5 J/m^3, zeta = 30",
@@ -83,7 +87,9 @@ def summary(variant, run, reference):
     change = curve_change(rows, reference["rows"]) if reference else None
     wall = run["wall"]
     return [
-        variant, run["unknowns"], f"{len(rows) - 1}",
+        variant,
+        f"{last['dofs']:.0f}" if "dofs" in last else run["unknowns"],
+        f"{len(rows) - 1}",
         f"{last['u2_z'] * -1e3:.2f}",
         f"{iterations:.0f}",
         f"{wall:.0f} s on {run['ranks']}" if wall else

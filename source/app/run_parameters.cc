@@ -239,15 +239,6 @@ namespace DuctileContact
                 prefix + "Hardening threshold",
                 Utilities::to_string(a.hardening_threshold),
                 "0 when no body has Plasticity = true (there is no alpha)");
-    // The contact state is kept per surface node and the surfaces are
-    // built once: a refined contact face would need both carried over.
-    check_input(contact_pairs.empty(),
-                prefix + "Enabled",
-                "true",
-                "false in a scene with contact pairs (adaptive refinement "
-                "does not carry the contact state to refined contact "
-                "surfaces yet; refine there with Mesh/Local refinement "
-                "boxes)");
   }
 
 

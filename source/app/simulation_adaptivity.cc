@@ -3,6 +3,7 @@
 #include <deal.II/hp/fe_values.h>
 
 #include <ductile_contact/app/simulation.h>
+#include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/coupled/coupled_problem.h>
 #include <ductile_contact/output/solution_writer.h>
 
@@ -47,6 +48,8 @@ namespace DuctileContact
       if (cell->is_locally_owned())
         cells[cell->active_cell_index()] = history.pack(cell);
 
+    if (contact)
+      contact->keep_committed_state();
     const auto redistribute = [&]() {
       setup_dofs();
       trial.reinit(discretisation->owned_partitioning, comm);
@@ -64,6 +67,8 @@ namespace DuctileContact
         throw std::logic_error("adapt_mesh: a cell's history did not arrive");
     old_solution = u;
     u_ghosted    = u;
+    if (contact)
+      contact->transfer_committed_state(old_solution);
     align_hardening_history();
     accepted_force_on_new_mesh();
     writer->mesh_changed();
@@ -94,6 +99,8 @@ namespace DuctileContact
                          &history},
                         discretisation->hanging_node_constraints,
                         targets);
+    if (contact)
+      contact->add_committed_forces(old_solution, energy.last_force());
   }
 
 

@@ -57,6 +57,17 @@ namespace DuctileContact
         node_of[pair.slave.nodes[j].dofs[0]] = j;
     std::vector<std::vector<types::global_dof_index>> columns(
       pair.slave.nodes.size());
+    // A cell writes into the row of node j if it has one of j's DoFs or a
+    // DoF whose hanging-node constraint sends its row there.
+    const auto &hanging = discretisation.hanging_node_constraints;
+    const auto  add_cell_to =
+      [&](const types::global_dof_index               row,
+          const std::vector<types::global_dof_index> &cell_dofs) {
+        if (const auto it = node_of.find(row); it != node_of.end())
+          columns[it->second].insert(columns[it->second].end(),
+                                     cell_dofs.begin(),
+                                     cell_dofs.end());
+      };
     std::vector<types::global_dof_index> cell_dofs;
     for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
       {
@@ -65,10 +76,11 @@ namespace DuctileContact
         cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
         cell->get_dof_indices(cell_dofs);
         for (const auto dof : cell_dofs)
-          if (const auto it = node_of.find(dof); it != node_of.end())
-            columns[it->second].insert(columns[it->second].end(),
-                                       cell_dofs.begin(),
-                                       cell_dofs.end());
+          if (const auto *parents = hanging.get_constraint_entries(dof))
+            for (const auto &parent : *parents)
+              add_cell_to(parent.first, cell_dofs);
+          else
+            add_cell_to(dof, cell_dofs);
       }
     for (auto &c : columns)
       {
@@ -211,7 +223,7 @@ namespace DuctileContact
                                    std::vector<types::global_dof_index>{dof},
                                    *v);
     };
-    for (const auto &[l, m] : pair.M[j])
+    for (const auto &[l, m] : pair.master_row(j))
       for (unsigned int r = 0; r < dim; ++r)
         {
           const auto dof = pair.master.nodes[l].dofs[r];
@@ -283,7 +295,7 @@ namespace DuctileContact
                     dofs[r],
                     constraints,
                     tangent);
-        for (const auto &[l, m] : pair.M[j])
+        for (const auto &[l, m] : pair.master_row(j))
           add_row(
             rows[c], m / A, pair.master.nodes[l].dofs[c], constraints, tangent);
       }
@@ -331,7 +343,7 @@ namespace DuctileContact
               v += Js[r][a] * e[a];
             matrix(local[3 * j + r], column) -= v;
           }
-        for (const auto &[l, m] : pair.M[j])
+        for (const auto &[l, m] : pair.master_row(j))
           for (unsigned int r = 0; r < dim; ++r)
             matrix(local[3 * (ns + l) + r], column) += m / A * f[r] * e[0];
       }
@@ -358,10 +370,32 @@ namespace DuctileContact
     CondensedNodes nodes;
     condensed_states(pair, constraints, targets, nodes);
     const unsigned int ns = pair.slave.nodes.size();
+    // The tractions whose dM terms this rank adds: those of its nodes and,
+    // at a hanging node, the share its parents here interpolate.
+    std::vector<bool>           needed = nodes.owned;
+    std::vector<Tensor<1, dim>> forces(ns);
+    for (unsigned int j = 0; j < ns; ++j)
+      if (nodes.owned[j])
+        forces[j] = pair.nodal[j].force_density;
+    for (unsigned int h = 0; h < ns; ++h)
+      for (const auto &[p, w] : pair.slave.nodes[h].parents)
+        {
+          // Output: a hanging node shows its parents' interpolation.
+          pair.nodal[h].pressure += w * pair.nodal[p].pressure;
+          pair.nodal[h].gap += w * pair.nodal[p].gap;
+          if (nodes.owned[p])
+            {
+              needed[h] = true;
+              forces[h] += w * pair.nodal[p].force_density;
+            }
+        }
     std::vector<std::map<unsigned int, std::array<double, 10>>> gradients(ns);
     if (targets.tangent)
-      linearise_operators(
-        pair, nodes.owned, false, constraints, targets, gradients);
+      {
+        linearise_operators(
+          pair, needed, forces, false, constraints, targets, gradients);
+        fold_hanging_gradients(pair, nodes.owned, gradients);
+      }
     for (unsigned int j = 0; j < ns; ++j)
       {
         if (!nodes.owned[j])
@@ -371,6 +405,36 @@ namespace DuctileContact
           continue;
         combine_rows(pair, j, nodes, constraints, *targets.tangent);
         add_aggregate_terms(pair, j, nodes, gradients[j], constraints, targets);
+      }
+  }
+
+
+
+  void
+  ContactProblem::fold_hanging_gradients(
+    const Pair                                                  &pair,
+    const std::vector<bool>                                     &owned,
+    std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
+  {
+    for (unsigned int h = 0; h < pair.slave.nodes.size(); ++h)
+      {
+        const auto &parents = pair.slave.nodes[h].parents;
+        if (std::none_of(parents.begin(), parents.end(), [&](const auto &p) {
+              return owned[p.first];
+            }))
+          continue;
+        // Area, G and H of h through D and M (linearise_operators()) and
+        // through the positions; its normal is not folded.
+        auto &g = gradients[h];
+        add_direct_gradients(pair, h, g, false);
+        for (const auto &[p, w] : parents)
+          if (owned[p])
+            for (const auto &[key, e] : g)
+              {
+                auto &target = gradients[p][key];
+                for (unsigned int a = 0; a < 7; ++a)
+                  target[a] += w * e[a];
+              }
       }
   }
 } // namespace DuctileContact

@@ -55,7 +55,8 @@ namespace DuctileContact
     data.assign(pairs.size(), Pair());
     surface = IndexSet(discretisation.dof_handler.n_dofs());
     summaries.assign(pairs.size(), ContactPairSummary());
-    output_records.assign(pairs.size(), {});
+    if (output_records.size() != pairs.size()) // kept over mesh changes
+      output_records.assign(pairs.size(), {});
     for (unsigned int p = 0; p < pairs.size(); ++p)
       {
         const ContactPairParameters &prm  = pairs[p];
@@ -126,22 +127,20 @@ namespace DuctileContact
   void
   ContactProblem::check_condensable(const Pair &pair) const
   {
-    // The condensation replaces the rows of the slave nodes: they must be
-    // rows of their own (no hanging node) and of this pair only.
-    const std::string entry   = pairs[pair.index].subsection() + "/Enforcement";
-    bool              hanging = false;
+    // The condensation replaces the rows of the slave nodes: those that
+    // have rows (no hanging node) take over the hanging ones, which must
+    // hang on slave nodes; and they must be rows of this pair only.
+    const std::string entry  = pairs[pair.index].subsection() + "/Enforcement";
+    bool              orphan = false;
     for (const auto &node : pair.slave.nodes)
-      for (const auto dof : node.dofs)
-        hanging = hanging ||
-                  (discretisation.locally_owned_dofs.is_element(dof) &&
-                   discretisation.hanging_node_constraints.is_constrained(dof));
-    check_input(!Utilities::MPI::logical_or(
-                  hanging, discretisation.dof_handler.get_communicator()),
+      for (const auto &parent : node.parents)
+        orphan = orphan || parent.first == numbers::invalid_unsigned_int;
+    check_input(!orphan,
                 entry,
                 "semi-smooth Newton",
-                "augmented Lagrangian where the slave surface has hanging "
-                "nodes (the condensation needs the rows of the slave nodes); "
-                "or refine the slave surface uniformly");
+                "augmented Lagrangian where a hanging node of the slave "
+                "surface is constrained to nodes off it (a refined cell next "
+                "to a coarse one whose face is not in the slave surface)");
     std::set<types::global_dof_index> others;
     for (const Pair &other : data)
       if (&other != &pair)
@@ -168,24 +167,7 @@ namespace DuctileContact
         pair.slave.update(u, discretisation);
         pair.master.update(u, discretisation);
         pair.multiplier = pair.committed_multiplier;
-
-        std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
-        for (unsigned int m = 0; m < pair.master.faces.size(); ++m)
-          boxes.emplace_back(face_box(pair.master, m, 0.), m);
-        const auto tree = pack_rtree(boxes);
-
-        std::vector<std::vector<unsigned int>> candidates(
-          pair.slave.faces.size());
-        for (unsigned int s = 0; s < pair.slave.faces.size(); ++s)
-          {
-            std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
-            tree.query(boost::geometry::index::intersects(
-                         face_box(pair.slave, s, pair.search_radius)),
-                       std::back_inserter(hits));
-            for (const auto &hit : hits)
-              candidates[s].push_back(hit.second);
-            std::sort(candidates[s].begin(), candidates[s].end());
-          }
+        std::vector<std::vector<unsigned int>> candidates = search(pair);
         if (candidates != pair.candidates)
           {
             changed         = true;
@@ -193,6 +175,30 @@ namespace DuctileContact
           }
       }
     return changed;
+  }
+
+
+
+  std::vector<std::vector<unsigned int>>
+  ContactProblem::search(const Pair &pair)
+  {
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
+    for (unsigned int m = 0; m < pair.master.faces.size(); ++m)
+      boxes.emplace_back(face_box(pair.master, m, 0.), m);
+    const auto tree = pack_rtree(boxes);
+
+    std::vector<std::vector<unsigned int>> candidates(pair.slave.faces.size());
+    for (unsigned int s = 0; s < pair.slave.faces.size(); ++s)
+      {
+        std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+        tree.query(boost::geometry::index::intersects(
+                     face_box(pair.slave, s, pair.search_radius)),
+                   std::back_inserter(hits));
+        for (const auto &hit : hits)
+          candidates[s].push_back(hit.second);
+        std::sort(candidates[s].begin(), candidates[s].end());
+      }
+    return candidates;
   }
 
 
@@ -275,7 +281,7 @@ namespace DuctileContact
     for (const unsigned int k : slave_rows)
       for (unsigned int r = 0; r < dim; ++r)
         local.emplace(3 * k + r, 0);
-    for (const auto &[l, m] : pair.M[j])
+    for (const auto &[l, m] : pair.master_row(j))
       for (unsigned int r = 0; r < dim; ++r)
         local.emplace(3 * (ns + l) + r, 0);
     for (const auto &entry : g)
@@ -308,14 +314,21 @@ namespace DuctileContact
                                 std::vector<unsigned int> &master_nodes) const
   {
     std::set<unsigned int> s, m;
-    for (const unsigned int f : pair.slave.node_faces[j])
-      {
-        s.insert(pair.slave.faces[f].nodes.begin(),
-                 pair.slave.faces[f].nodes.end());
-        for (const unsigned int c : pair.candidates[f])
-          m.insert(pair.master.faces[c].nodes.begin(),
-                   pair.master.faces[c].nodes.end());
-      }
+    const auto             add_faces_of = [&](const unsigned int node) {
+      for (const unsigned int f : pair.slave.node_faces[node])
+        {
+          s.insert(pair.slave.faces[f].nodes.begin(),
+                   pair.slave.faces[f].nodes.end());
+          for (const unsigned int c : pair.candidates[f])
+            m.insert(pair.master.faces[c].nodes.begin(),
+                     pair.master.faces[c].nodes.end());
+        }
+    };
+    add_faces_of(j);
+    // Semi-smooth Newton: node j takes over its hanging nodes' couplings.
+    if (pair.semi_smooth)
+      for (const auto &[h, w] : pair.slave.children[j])
+        add_faces_of(h);
     slave_nodes.assign(s.begin(), s.end());
     master_nodes.assign(m.begin(), m.end());
   }
@@ -455,6 +468,37 @@ namespace DuctileContact
             a.H -= m * (master.nodes[l].current - pair.master_committed[l]);
           }
       }
+    pair.folded_M.clear();
+    if (pair.semi_smooth && pair.slave.has_hanging_nodes())
+      fold_hanging_nodes(pair);
+  }
+
+
+
+  void
+  ContactProblem::fold_hanging_nodes(Pair &pair) const
+  {
+    const ContactSurface &slave = pair.slave;
+    pair.folded_M               = pair.M;
+    for (unsigned int h = 0; h < slave.nodes.size(); ++h)
+      {
+        if (slave.nodes[h].parents.empty())
+          continue;
+        NodalAggregates &a = pair.aggregates[h];
+        for (const auto &[p, w] : slave.nodes[h].parents)
+          {
+            NodalAggregates &b = pair.aggregates[p];
+            b.area += w * a.area;
+            b.G += w * a.G;
+            b.H += w * a.H;
+            for (const auto &[l, m] : pair.M[h])
+              pair.folded_M[p][l] += w * m;
+          }
+        a.area = 0.;
+        a.G    = Tensor<1, dim>();
+        a.H    = Tensor<1, dim>();
+        pair.folded_M[h].clear();
+      }
   }
 
 
@@ -528,6 +572,7 @@ namespace DuctileContact
   ContactProblem::linearise_operators(
     const Pair                                                  &pair,
     const std::vector<bool>                                     &needed,
+    const std::vector<Tensor<1, dim>>                           &forces,
     const bool                                                   slave_rows,
     const AffineConstraints<double>                             &constraints,
     const AssemblyTargets                                       &targets,
@@ -570,7 +615,7 @@ namespace DuctileContact
             const unsigned int j = s_nodes[i];
             if (!needed[j])
               continue;
-            const Tensor<1, dim> &force = pair.nodal[j].force_density;
+            const Tensor<1, dim> &force = forces[j];
             auto                 &g     = gradients[j];
             for (unsigned int a = 0; a < n_coordinates; ++a)
               {
@@ -620,7 +665,8 @@ namespace DuctileContact
   ContactProblem::add_direct_gradients(
     const Pair                                     &pair,
     const unsigned int                              j,
-    std::map<unsigned int, std::array<double, 10>> &g)
+    std::map<unsigned int, std::array<double, 10>> &g,
+    const bool                                      normal)
   {
     const ContactSurface &slave = pair.slave;
     const unsigned int    ns    = slave.nodes.size();
@@ -639,6 +685,8 @@ namespace DuctileContact
           e[1 + r] += m;
           e[4 + r] -= m;
         }
+    if (!normal)
+      return;
     // ... and the normal n_j = sum_f n_f / |sum_f n_f|:
     // dn_j = (I - n_j n_j) / |sum_f n_f| sum_f dn_f.
     const Tensor<1, dim> &n = pair.aggregates[j].normal;
@@ -685,7 +733,13 @@ namespace DuctileContact
     std::vector<std::map<unsigned int, std::array<double, 10>>> gradients(ns);
     const bool tangent = targets.tangent != nullptr;
     if (tangent)
-      linearise_operators(pair, needed, true, constraints, targets, gradients);
+      {
+        std::vector<Tensor<1, dim>> forces(ns);
+        for (unsigned int j = 0; j < ns; ++j)
+          forces[j] = pair.nodal[j].force_density;
+        linearise_operators(
+          pair, needed, forces, true, constraints, targets, gradients);
+      }
 
     for (unsigned int j = 0; j < ns; ++j)
       {

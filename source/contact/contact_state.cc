@@ -1,10 +1,13 @@
 // The committed contact state in and out of a checkpoint
-// (ContactProblem::committed_state(), restore_committed_state()).
+// (ContactProblem::committed_state(), restore_committed_state()) and across
+// a mesh change (keep_committed_state(), transfer_committed_state()).
 #include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/core/input_error.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 namespace DuctileContact
 {
@@ -60,6 +63,43 @@ namespace DuctileContact
     point_at(const double *p)
     {
       return Point<dim>(p[0], p[1], p[2]);
+    }
+
+    /// Quad9 shape function values at the parameter point of @p surface's
+    /// face that contains the reference point @p x (the face whose
+    /// parameters lie farthest inside [0, 1]^2); false if no face does.
+    bool
+    locate_on_faces(const ContactSurface  &surface,
+                    const Point<dim>      &x,
+                    unsigned int          &face,
+                    std::array<double, 9> &shape)
+    {
+      // Slack for points a curved boundary description moved off the old
+      // faces' quadratic geometry.
+      constexpr double slack = 1e-6;
+      double           best  = -std::numeric_limits<double>::max();
+      for (unsigned int f = 0; f < surface.faces.size(); ++f)
+        {
+          Quad9 q;
+          for (unsigned int n = 0; n < 9; ++n)
+            q.x[n] = surface.nodes[surface.faces[f].nodes[n]].reference;
+          const double size = q.x[0].distance(q.x[8]);
+          if (x.distance(q.x[4]) > size)
+            continue;
+          Point<2> xi;
+          if (!q.project_along(x, q.normal(Point<2>(0.5, 0.5)), {0.5, 0.5}, xi))
+            continue;
+          const double inside =
+            std::min({xi[0], xi[1], 1. - xi[0], 1. - xi[1]});
+          if (inside > best && inside > -slack &&
+              q.position(xi).distance(x) < 1e-3 * size)
+            {
+              best = inside;
+              face = f;
+              Quad9::shape(xi, shape);
+            }
+        }
+      return best > -std::numeric_limits<double>::max();
     }
   } // namespace
 
@@ -152,5 +192,126 @@ namespace DuctileContact
       }
     if (pos != state.size())
       throw mismatch("records left over");
+  }
+
+
+
+  void
+  ContactProblem::keep_committed_state()
+  {
+    kept = data;
+  }
+
+
+
+  void
+  ContactProblem::transfer_committed_state(
+    const TrilinosWrappers::MPI::BlockVector &accepted)
+  {
+    AssertDimension(kept.size(), data.size());
+    for (Pair &pair : data)
+      {
+        const Pair &old = kept[pair.index];
+        pair.slave.update(accepted, discretisation);
+        pair.master.update(accepted, discretisation);
+        for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
+          pair.slave_committed[j] = pair.slave.nodes[j].current;
+        for (unsigned int l = 0; l < pair.master.nodes.size(); ++l)
+          pair.master_committed[l] = pair.master.nodes[l].current;
+
+        const NodeLocator old_nodes(old.slave, 1e-6 * old.face_size);
+        for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
+          {
+            const Point<dim> &x = pair.slave.nodes[j].reference;
+            const int         k = old_nodes.find(x);
+            if (k >= 0)
+              {
+                pair.committed_multiplier[j] = old.committed_multiplier[k];
+                pair.committed_traction[j]   = old.committed_traction[k];
+                continue;
+              }
+            unsigned int          f = 0;
+            std::array<double, 9> N;
+            if (!locate_on_faces(old.slave, x, f, N))
+              throw std::logic_error("transfer_committed_state: a new slave "
+                                     "node lies on no old slave face");
+            pair.committed_multiplier[j] = 0.;
+            pair.committed_traction[j]   = Tensor<1, dim>();
+            for (unsigned int n = 0; n < 9; ++n)
+              {
+                const unsigned int node = old.slave.faces[f].nodes[n];
+                pair.committed_multiplier[j] +=
+                  N[n] * old.committed_multiplier[node];
+                pair.committed_traction[j] +=
+                  N[n] * old.committed_traction[node];
+              }
+            // Quadratic shape functions dip below zero inside a face.
+            pair.committed_multiplier[j] =
+              std::max(0., pair.committed_multiplier[j]);
+          }
+        pair.multiplier       = pair.committed_multiplier;
+        pair.dissipation      = old.dissipation;
+        pair.step_dissipation = 0.;
+      }
+    kept.clear();
+  }
+
+
+
+  void
+  ContactProblem::add_committed_forces(
+    const TrilinosWrappers::MPI::BlockVector &u,
+    TrilinosWrappers::MPI::BlockVector       &force)
+  {
+    for (Pair &pair : data)
+      {
+        // D, M and the normals on the geometry of u, with candidates of
+        // their own (the step's search comes later and decides the
+        // sparsity pattern).
+        pair.slave.update(u, discretisation);
+        pair.master.update(u, discretisation);
+        std::vector<std::vector<unsigned int>> step_candidates =
+          std::move(pair.candidates);
+        pair.candidates = search(pair);
+        integrate(pair);
+        pair.candidates = std::move(step_candidates);
+
+        const auto &dofs    = discretisation.locally_owned_dofs;
+        const auto &hanging = discretisation.hanging_node_constraints;
+        for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
+          {
+            if (!pair.carries_contact(j) ||
+                !dofs.is_element(pair.slave.nodes[j].dofs[0]))
+              continue;
+            const Tensor<1, dim> f =
+              pair.committed_multiplier[j] * pair.aggregates[j].normal +
+              pair.committed_traction[j];
+            // As the assembly adds them: D_jk f_j on slave node k (D lumped
+            // to node j for semi-smooth Newton), -M_jl f_j on master node l.
+            std::map<unsigned int, double> slave_weights;
+            if (pair.semi_smooth)
+              slave_weights[j] = pair.aggregates[j].area;
+            else
+              slave_weights = pair.D[j];
+            Vector<double>                       values;
+            std::vector<types::global_dof_index> indices;
+            for (const auto &[k, d] : slave_weights)
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  indices.push_back(pair.slave.nodes[k].dofs[c]);
+                  values.grow_or_shrink(values.size() + 1);
+                  values[values.size() - 1] = d * f[c];
+                }
+            for (const auto &[l, m] : pair.master_row(j))
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  indices.push_back(pair.master.nodes[l].dofs[c]);
+                  values.grow_or_shrink(values.size() + 1);
+                  values[values.size() - 1] = -m * f[c];
+                }
+            hanging.distribute_local_to_global(values, indices, force);
+          }
+      }
+    force.compress(VectorOperation::add);
   }
 } // namespace DuctileContact

@@ -17,9 +17,15 @@ namespace DuctileContact
 
   namespace
   {
-    /// Doubles per gathered face: material id, then per node 3 DoF
-    /// indices and 3 reference coordinates.
-    constexpr unsigned int face_record = 1 + 9 * 6;
+    /// Parents of a hanging node on a quad9 face: the three nodes of the
+    /// coarse edge it lies on.
+    constexpr unsigned int max_parents = 3;
+    /// Doubles per gathered node: 3 DoF indices, 3 reference coordinates,
+    /// the number of parents and (DoF of the parent's x component, weight)
+    /// for each.
+    constexpr unsigned int node_record = 6 + 1 + 2 * max_parents;
+    /// Doubles per gathered face: material id, then its 9 nodes.
+    constexpr unsigned int face_record = 1 + 9 * node_record;
   } // namespace
 
 
@@ -57,7 +63,7 @@ namespace DuctileContact
             // Parameters of the face: the two free cell coordinates in
             // cyclic order after the face's normal direction.
             const unsigned int d = f / 2, c1 = (d + 1) % 3, c2 = (d + 2) % 3;
-            std::array<std::array<double, 6>, 9> node_data;
+            std::array<std::array<double, node_record>, 9> node_data{};
             for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
               {
                 const auto ci = fe.system_to_component_index(i);
@@ -74,6 +80,22 @@ namespace DuctileContact
                     data[c] = static_cast<double>(
                       cell_dofs[fe.component_to_system_index(c, ci.second)]);
                     data[3 + c] = X[c];
+                  }
+                const auto *parents =
+                  discretisation.hanging_node_constraints
+                    .get_constraint_entries(
+                      static_cast<types::global_dof_index>(data[0]));
+                if (parents != nullptr)
+                  {
+                    AssertThrow(parents->size() <= max_parents,
+                                ExcInternalError());
+                    data[6] = parents->size();
+                    for (unsigned int p = 0; p < parents->size(); ++p)
+                      {
+                        data[7 + 2 * p] =
+                          static_cast<double>((*parents)[p].first);
+                        data[8 + 2 * p] = (*parents)[p].second;
+                      }
                   }
               }
             // Orientation: x_xi x x_eta must point out of the cell.
@@ -97,6 +119,8 @@ namespace DuctileContact
     nodes.clear();
     faces.clear();
     std::map<types::global_dof_index, unsigned int> node_index;
+    // Parent DoFs of each hanging node, numbered once every node is known.
+    std::map<unsigned int, std::vector<std::pair<double, double>>> hanging;
     for (const auto &records : all)
       for (std::size_t r = 0; r + face_record <= records.size();
            r += face_record)
@@ -105,7 +129,7 @@ namespace DuctileContact
           face.material_id = static_cast<types::material_id>(records[r]);
           for (unsigned int n = 0; n < 9; ++n)
             {
-              const double *data = &records[r + 1 + 6 * n];
+              const double *data = &records[r + 1 + node_record * n];
               Node          node;
               for (unsigned int c = 0; c < dim; ++c)
                 {
@@ -118,6 +142,11 @@ namespace DuctileContact
               if (inserted)
                 nodes.push_back(node);
               face.nodes[n] = it->second;
+              if (inserted)
+                for (unsigned int p = 0; p < static_cast<unsigned int>(data[6]);
+                     ++p)
+                  hanging[it->second].emplace_back(data[7 + 2 * p],
+                                                   data[8 + 2 * p]);
             }
           faces.push_back(face);
         }
@@ -136,6 +165,35 @@ namespace DuctileContact
     for (unsigned int f = 0; f < faces.size(); ++f)
       for (const unsigned int n : faces[f].nodes)
         node_faces[n].push_back(f);
+
+    // A hanging node of a contact surface lies on an edge of a coarser
+    // face, usually of the same surface, whose nodes are its parents (a
+    // parent off the surface: invalid_unsigned_int).
+    children.assign(nodes.size(), {});
+    for (const auto &[n, parents] : hanging)
+      for (const auto &[dof, weight] : parents)
+        {
+          const auto it =
+            node_index.find(static_cast<types::global_dof_index>(dof));
+          if (it == node_index.end())
+            {
+              nodes[n].parents.emplace_back(numbers::invalid_unsigned_int,
+                                            weight);
+              continue;
+            }
+          nodes[n].parents.emplace_back(it->second, weight);
+          children[it->second].emplace_back(n, weight);
+        }
+  }
+
+
+
+  bool
+  ContactSurface::has_hanging_nodes() const
+  {
+    return std::any_of(nodes.begin(), nodes.end(), [](const Node &n) {
+      return !n.parents.empty();
+    });
   }
 
 

@@ -49,7 +49,7 @@ namespace DuctileContact
       "converged load step the cells are flagged; if any are, the state of "
       "the last accepted step is carried to the refined mesh and the step "
       "is solved again, until nothing is flagged or Maximum passes per "
-      "step is reached. Cells are never coarsened. Not with contact pairs.");
+      "step is reached. Cells are never coarsened.");
     prm.add_parameter(
       "Phase-field threshold",
       adaptive.phase_field_threshold,

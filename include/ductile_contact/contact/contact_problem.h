@@ -183,6 +183,38 @@ namespace DuctileContact
     void
     restore_committed_state(const std::vector<double> &state);
 
+    /// Before a mesh change (adaptive refinement): keeps the committed
+    /// state of the current surfaces for transfer_committed_state().
+    void
+    keep_committed_state();
+
+    /**
+     * After a mesh change and setup(): the committed state kept by
+     * keep_committed_state() on the new surfaces. The positions of the
+     * last accepted step are X + u_n with @p accepted (u_n on the new
+     * mesh, which refinement carries exactly); a slave node that existed
+     * before keeps its multiplier and tangential traction, a new one (on a
+     * refined slave face) gets them interpolated on the old face that
+     * contains it (quad9 shape functions at its reference position); the
+     * dissipation so far and the output series carry over.
+     */
+    void
+    transfer_committed_state(
+      const dealii::TrilinosWrappers::MPI::BlockVector &accepted);
+
+    /**
+     * Adds the contact forces of the committed state at @p u (ghosted) to
+     * @p force (compressed here), as the assembly adds them to the
+     * internal force: the accepted step's nodal force on a new mesh
+     * (Simulation::accepted_force_on_new_mesh()). The traction of slave
+     * node j is lambda_j n_j + t_j from the committed multipliers and
+     * tangential tractions (semi-smooth Newton commits both from its
+     * condensed tractions).
+     */
+    void
+    add_committed_forces(const dealii::TrilinosWrappers::MPI::BlockVector &u,
+                         dealii::TrilinosWrappers::MPI::BlockVector &force);
+
     /// The series of the contact output files (checkpoints).
     std::vector<std::vector<std::pair<double, std::string>>> &
     output_series()
@@ -219,6 +251,10 @@ namespace DuctileContact
       /// Per slave node: D_jk, M_jl, the aggregates (nodal_contact.h), the
       /// length of the summed face normals n_j is made from, the state.
       std::vector<std::map<unsigned int, double>> D, M;
+      /// Semi-smooth Newton with hanging slave nodes: M with the row of
+      /// each hanging node added, times its weight, to its parents' rows
+      /// (fold_hanging_nodes()); empty otherwise.
+      std::vector<std::map<unsigned int, double>> folded_M;
       std::vector<NodalAggregates>                aggregates;
       std::vector<double>                         normal_length;
       std::vector<NodalContactState>              nodal;
@@ -227,6 +263,14 @@ namespace DuctileContact
       /// carry contact).
       bool
       carries_contact(const unsigned int j) const;
+
+      /// The master weights of node @p j's traction: folded_M[j] if
+      /// there is one, else M[j].
+      const std::map<unsigned int, double> &
+      master_row(const unsigned int j) const
+      {
+        return folded_M.empty() ? M[j] : folded_M[j];
+      }
     };
 
     /// @p constraints (which know the locally relevant DoFs only) plus the
@@ -239,15 +283,34 @@ namespace DuctileContact
     extend_constraints(const dealii::AffineConstraints<double> &constraints,
                        dealii::AffineConstraints<double>       &extended) const;
 
-    /// Throws InputError (on every rank) when the slave nodes of a
-    /// semi-smooth Newton pair have hanging nodes or belong to another
-    /// pair too.
+    /// Throws InputError (on every rank) when a slave node of a
+    /// semi-smooth Newton pair hangs on a node off the slave surface or
+    /// belongs to another pair too.
     void
     check_condensable(const Pair &pair) const;
+
+    /// Candidate master faces of each slave face of @p pair on the
+    /// current geometry (bounding boxes enlarged by the search radius).
+    static std::vector<std::vector<unsigned int>>
+    search(const Pair &pair);
 
     /// D, M, normals and aggregates of @p pair on its current geometry.
     void
     integrate(Pair &pair);
+
+    /**
+     * Semi-smooth Newton with hanging nodes on the slave surface: the
+     * multipliers live on the nodes with rows of their own. A hanging node
+     * h (u_h = sum_p w_p u_p) hands its area, weighted gap and slip
+     * aggregates and its master weights, times w_p, to its parents p and
+     * carries no contact itself; its traction is the interpolation
+     * sum_p w_p f_p. That is the dual multiplier space restricted to the
+     * constrained trace space, with D lumped: a uniform traction still
+     * gives the consistent nodal forces on both sides, and the forces on
+     * the two bodies still balance.
+     */
+    void
+    fold_hanging_nodes(Pair &pair) const;
 
     /// The nodal contact law (augmented Lagrangian) of every node of
     /// @p pair and its summary.
@@ -350,6 +413,7 @@ namespace DuctileContact
     linearise_operators(
       const Pair                                                  &pair,
       const std::vector<bool>                                     &needed,
+      const std::vector<dealii::Tensor<1, dim>>                   &forces,
       const bool                                                   slave_rows,
       const dealii::AffineConstraints<double>                     &constraints,
       const AssemblyTargets                                       &targets,
@@ -357,11 +421,22 @@ namespace DuctileContact
       const;
 
     /// Adds to @p g the derivatives of the aggregates of node @p j with
-    /// D and M held (G, H through the positions) and of its normal.
+    /// D and M held (G, H through the positions) and, if @p normal, of its
+    /// normal.
     static void
     add_direct_gradients(const Pair                                     &pair,
                          const unsigned int                              j,
-                         std::map<unsigned int, std::array<double, 10>> &g);
+                         std::map<unsigned int, std::array<double, 10>> &g,
+                         const bool normal = true);
+
+    /// Semi-smooth Newton: adds the aggregate derivatives of every hanging
+    /// slave node that a node of @p owned is a parent of, times its
+    /// weight, to that parent's (fold_hanging_nodes()).
+    static void
+    fold_hanging_gradients(
+      const Pair                                                  &pair,
+      const std::vector<bool>                                     &owned,
+      std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients);
 
     /// Columns of the bulk rows of the owned slave nodes of @p pair (DoFs
     /// of the cells around them), per slave node.
@@ -394,6 +469,8 @@ namespace DuctileContact
     const Discretisation &discretisation;
     const std::map<dealii::types::material_id, const BodyParameters *> bodies;
     std::vector<Pair>                                                  data;
+    /// The pairs before a mesh change (keep_committed_state()).
+    std::vector<Pair>               kept;
     std::vector<ContactPairSummary> summaries;
     /// DoFs of all contact surfaces.
     dealii::IndexSet surface;

@@ -8,6 +8,7 @@
 #include <ductile_contact/discretisation/discretisation.h>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace DuctileContact
@@ -34,6 +35,11 @@ namespace DuctileContact
       std::array<dealii::types::global_dof_index, dim> dofs;
       dealii::Point<dim>                               reference;
       dealii::Point<dim>                               current;
+      /// A hanging node (its DoFs constrained by hanging-node constraints):
+      /// the nodes it is constrained to and their weights, u = sum w_p u_p
+      /// (the same for each component); a parent that is not a node of this
+      /// surface is numbers::invalid_unsigned_int. Empty otherwise.
+      std::vector<std::pair<unsigned int, double>> parents;
     };
     struct Face
     {
@@ -46,6 +52,13 @@ namespace DuctileContact
     std::vector<Face>          faces;
     /// Faces that contain each node.
     std::vector<std::vector<unsigned int>> node_faces;
+    /// The hanging nodes constrained to each node (Node::parents reversed):
+    /// (hanging node, weight).
+    std::vector<std::vector<std::pair<unsigned int, double>>> children;
+
+    /// Whether any node hangs.
+    bool
+    has_hanging_nodes() const;
 
     /// Collects the boundary faces with @p id from every rank. Requires
     /// FE_Q(2) for the displacement (throws InputError otherwise).
