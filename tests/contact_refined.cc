@@ -12,6 +12,12 @@
 //    gap and multiplier, and its force goes to its parents through the
 //    constraints; with semi-smooth Newton the hanging nodes hand their
 //    aggregates to their parents (ContactProblem::fold_hanging_nodes()).
+//  - The linearisation with hanging slave nodes (semi-smooth Newton): the
+//    coarse block on the plate of contact_semi_smooth (mu_c = 0.2) with one
+//    cell of the block's bottom refined; the condensed tangent against
+//    central finite differences of the residual (the residual has kinks,
+//    so the error is compared with the one without the refinement, as are
+//    the Newton iterations).
 //  - Adaptive refinement with contact: the patch with a plastic lower cube
 //    (yield at 0.85 MPa, 1.25 MPa at the end) and Coulomb friction mu_c =
 //    0.05,
@@ -33,9 +39,14 @@ using namespace dealii;
 namespace
 {
   const std::string semi_smooth = "  set Enforcement = semi-smooth Newton\n";
-  const std::string augmented =
-    "  set Enforcement = augmented Lagrangian\n"
-    "  set Penetration tolerance = 1e-8\n";
+  const std::string augmented   = "  set Enforcement = augmented Lagrangian\n"
+                                  "  set Penetration tolerance = 1e-8\n";
+
+  std::string
+  semi_smooth_pair()
+  {
+    return "\nsubsection Contact pair 1\n" + semi_smooth + "end\n";
+  }
 
   std::string
   refinement_boxes(const std::string &boxes)
@@ -54,9 +65,10 @@ namespace
         const double       top_uz,
         const std::string &name)
   {
-    const auto s = Testing::run_scene(
-      Testing::contact_patch_prm(4, 3, enforcement) + refinement_boxes(boxes),
-      name);
+    const auto s =
+      Testing::run_scene(Testing::contact_patch_prm(4, 3, enforcement) +
+                           refinement_boxes(boxes),
+                         name);
     const double p_max = s.at("contact1_max_pressure").back();
     const double p_min = s.at("contact1_min_pressure").back();
     const double force = s.at("contact1_force_z").back();
@@ -79,14 +91,46 @@ namespace
               << s.at("newton_iterations").back() << std::endl;
   }
 
+  /// The coarse paper scene of contact_semi_smooth (block on plate, mu_c =
+  /// 0.2, 3 steps), the tangent checked, with @p boxes refined.
+  std::string
+  block_on_plate_prm(const std::string &boxes)
+  {
+    std::string prm = Testing::shipped_scene("two_bodies.prm");
+    for (const auto &[from, to] :
+         {std::pair<std::string, std::string>{"19, 13, 2", "10, 7, 1"},
+          {"5, 5, 5", "3, 3, 3"},
+          {"End time  = 113", "End time  = 3"}})
+      prm.replace(prm.find(from), from.size(), to);
+    return prm + semi_smooth_pair() + R"(
+subsection Newton
+  set Check tangent = true
+end
+subsection Output
+  set Interval = 0
+end
+)" + refinement_boxes(boxes);
+  }
+
+  /// Largest tangent error and total Newton iterations of a run.
+  std::pair<double, double>
+  tangent_quality(const Testing::Table &s)
+  {
+    double tangent_error = 0., newton = 0.;
+    for (std::size_t n = 1; n < s.at("time").size(); ++n)
+      {
+        tangent_error = std::max(tangent_error, s.at("tangent_error")[n]);
+        newton += s.at("newton_iterations")[n];
+      }
+    return {tangent_error, newton};
+  }
+
   /// The plastic lower cube with friction, loaded in five steps.
   std::string
   plastic_patch_prm()
   {
-    return Testing::contact_patch_prm(4,
-                                      3,
-                                      semi_smooth +
-                                        "  set Friction coefficient = 0.05\n") +
+    return Testing::contact_patch_prm(
+             4, 3, semi_smooth + "  set Friction coefficient = 0.05\n") +
            R"(
 subsection Body 1
   set Plasticity = true
@@ -174,6 +218,35 @@ main(int argc, char **argv)
         top_uz,
         "slave_ssn");
 
+  {
+    // One cell of the block's bottom layer refined.
+    const auto plain = tangent_quality(
+      Testing::run_scene(block_on_plate_prm(""), "block_on_plate"));
+    const auto s =
+      Testing::run_scene(block_on_plate_prm(
+                           "0.015, 0.08, 0.02 : 0.035, 0.1, 0.03 : 1"),
+                         "block_on_plate_refined");
+    const auto        refined = tangent_quality(s);
+    const std::size_t last    = s.at("time").size() - 1;
+    std::cout << "block on plate: tangent error " << plain.first << " and "
+              << refined.first << " with hanging slave nodes; Newton "
+              << plain.second << " and " << refined.second << "; sticking "
+              << s.at("contact1_sticking_nodes")[last] << ", slipping "
+              << s.at("contact1_slipping_nodes")[last] << std::endl;
+    out << "block on plate with hanging slave nodes, semi-smooth Newton, mu_c "
+           "= 0.2:"
+        << std::endl
+        << "  condensed tangent = finite differences of the residual "
+           "(1e-3 at the last update of each step, at most twice the error "
+           "without the refinement): "
+        << Testing::yes_no(refined.first < 1e-3 &&
+                           refined.first < 2. * plain.first)
+        << std::endl
+        << "  Newton iterations of the 3 steps at most 2 more than without "
+           "the refinement: "
+        << Testing::yes_no(refined.second <= plain.second + 2) << std::endl;
+  }
+
   // Adaptive refinement against the refined mesh from the start.
   const auto adaptive = [](const std::string &threshold) {
     return R"(
@@ -209,7 +282,7 @@ end
                                             "max_alpha",
                                             "plastic_work",
                                             "external_work"};
-  double worst = 0;
+  double                         worst   = 0;
   for (const std::string &c : columns)
     {
       const double d = difference(fixed, adapted, c);
@@ -221,10 +294,11 @@ end
     largest_slip = std::max(largest_slip, v);
   out << "adaptive refinement with frictional contact:" << std::endl
       << "  refined in the first plastic step (4 of "
-      << adapted.at("step").back() << "): " << Testing::yes_no(refined_step == 4)
-      << ", cells " << adapted.at("cells").front() << " -> "
-      << adapted.at("cells").back() << " (the refined mesh from the start: "
-      << fixed.at("cells").back() << ")" << std::endl
+      << adapted.at("step").back()
+      << "): " << Testing::yes_no(refined_step == 4) << ", cells "
+      << adapted.at("cells").front() << " -> " << adapted.at("cells").back()
+      << " (the refined mesh from the start: " << fixed.at("cells").back()
+      << ")" << std::endl
       << "  the interface slips afterwards (max slip > 1e-6 m): "
       << Testing::yes_no(largest_slip > 1e-6) << std::endl
       << "  every step equals the run on the refined mesh (1e-7 of each "
