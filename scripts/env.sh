@@ -8,6 +8,10 @@ export OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1
 # Parallel make and ctest jobs: all cores (plain `nproc` obeys OMP_NUM_THREADS
 # and would say 1).
 jobs=$(nproc --all)
+# Open MPI binds each rank to a core, counting from core 0 in every mpirun: two
+# 1-rank runs at once (benchmarks with -j 2, a run beside a test) then share
+# core 0 and leave core 1 idle. Let the scheduler place the ranks.
+export OMPI_MCA_hwloc_base_binding_policy=none
 # Open MPI in containers: avoid probing for fast interconnects that are not there.
 export OMPI_MCA_btl_vader_single_copy_mechanism=none
 project_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
