@@ -171,22 +171,20 @@ end
       // its 4 cells' patches there, each with a plate twin.
       std::map<std::array<long, 3>, std::set<int>> bodies_at;
       unsigned int                                 block_bottom = 0;
+      // A node's position in micrometres, as integers.
+      const auto key_of = [&nodes](const std::size_t i) {
+        return std::array<long, 3>{{std::lround(nodes[i][0] * 1e6),
+                                    std::lround(nodes[i][1] * 1e6),
+                                    std::lround(nodes[i][2] * 1e6)}};
+      };
       for (std::size_t i = 0; i < nodes.size(); ++i)
-        {
-          const std::array<long, 3> key{std::lround(nodes[i][0] * 1e6),
-                                        std::lround(nodes[i][1] * 1e6),
-                                        std::lround(nodes[i][2] * 1e6)};
-          bodies_at[key].insert(static_cast<int>(std::lround(body[i][0])));
-        }
+        bodies_at[key_of(i)].insert(static_cast<int>(std::lround(body[i][0])));
       bool twins = true;
       for (std::size_t i = 0; i < nodes.size(); ++i)
         if (std::lround(body[i][0]) == 1 && std::abs(nodes[i][2] - 0.02) < 1e-9)
           {
             ++block_bottom;
-            const std::array<long, 3> key{std::lround(nodes[i][0] * 1e6),
-                                          std::lround(nodes[i][1] * 1e6),
-                                          std::lround(nodes[i][2] * 1e6)};
-            twins = twins && bodies_at[key].count(0) == 1;
+            twins = twins && bodies_at[key_of(i)].count(0) == 1;
           }
       out << "27 nodes per cell (no merging): "
           << Testing::yes_no(nodes.size() == 27 * n_cells) << "\n"
