@@ -16,7 +16,11 @@
 //  - Coulomb sliding of contact_friction (mu_c = 0.3): the interface
 //    sticks exactly at first, then every node slips with |F_T| = mu_c
 //    |F_N|, and the top's reaction balances F_N + F_T.
-// On 1 and 2 MPI ranks with identical output.
+// One MPI rank (it ran on 2 ranks too until the suite outgrew its
+// 10-minute budget): contact_refined runs the same patch test, the block
+// on the plate with the tangent checked and frictional sliding by
+// semi-smooth Newton on 2 ranks, and checkpoint/resume the block on the
+// plate on 1, 2 and 3 ranks.
 #include "tests.h"
 
 #include <cmath>
