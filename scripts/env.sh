@@ -12,6 +12,9 @@ jobs=$(nproc --all)
 # 1-rank runs at once (benchmarks with -j 2, a run beside a test) then share
 # core 0 and leave core 1 idle. Let the scheduler place the ranks.
 export OMPI_MCA_hwloc_base_binding_policy=none
+# A run that ends with a non-zero exit code (bad input, a run that gives up)
+# has written its output; mpirun need not wait 2 s before it returns.
+export OMPI_MCA_odls_base_sigkill_timeout=0
 # Open MPI in containers: avoid probing for fast interconnects that are not there.
 export OMPI_MCA_btl_vader_single_copy_mechanism=none
 project_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
