@@ -29,6 +29,8 @@ names = {
     "block_refined": "block refined once (10 x 10 x 10 cells)",
     "clamp_adaptive": "adaptive refinement where alpha > 0.002, at most once "
                       "(unknowns: at the end)",
+    "clamp_adaptive_early": "adaptive refinement where alpha > 1e-4 (from the "
+                            "first yield), at most once (unknowns: at the end)",
     "clamp_adaptive2": "adaptive refinement where alpha > 0.002, at most "
                        "twice (unknowns: at the end)",
     "ductile_zeta1": "plastic work driver, w_c = 0, zeta = 1",

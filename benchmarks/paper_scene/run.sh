@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Issue #25: the paper's scene (prm/block_on_plate.prm) and its variants:
 # the viscosities eta_p and eta_f halved, the load step halved, the plate
-# refined at the clamp (by a box, or adaptively where alpha > 0.002, once
+# refined at the clamp (by a box, or adaptively where alpha > 0.002 or 1e-4, once
 # or twice: issue #28), and the plastic work crack driver. report.py
 # writes results.md and the plots (force curve, energies, fields).
 # Usage: benchmarks/paper_scene/run.sh [-j 2] [VARIANT...]
@@ -24,13 +24,14 @@ declare -A settings=(
   [clamp_refined]="subsection Mesh;set Local refinement boxes = 0.22,0,0 : 0.3,0.2,0.02 : 1;end"
   [block_refined]="subsection Mesh;set Local refinement boxes = 0,0,0.02 : 0.3,0.2,0.1 : 1;end"
   [clamp_adaptive]="subsection Mesh;subsection Adaptive refinement;set Enabled = true;set Hardening threshold = 0.002;set Maximum level = 1;end;end"
+  [clamp_adaptive_early]="subsection Mesh;subsection Adaptive refinement;set Enabled = true;set Hardening threshold = 1e-4;set Maximum level = 1;end;end"
   [clamp_adaptive2]="subsection Mesh;subsection Adaptive refinement;set Enabled = true;set Hardening threshold = 0.002;set Maximum level = 2;end;end"
   [ductile_zeta1]="$fracture;set Crack driver = elastic plus plastic work;set Critical work density = 0;set Driver factor = 1;end;end"
   [ductile]="$fracture;set Crack driver = elastic plus plastic work;set Critical work density = 5e5;set Driver factor = 10;end;end"
   [ductile_zeta30]="$fracture;set Crack driver = elastic plus plastic work;set Critical work density = 5e5;set Driver factor = 30;end;end"
 )
 order=(paper eta_p_half eta_f_half ductile_zeta1 ductile ductile_zeta30 dt_half
-       clamp_refined block_refined clamp_adaptive clamp_adaptive2)
+       clamp_refined block_refined clamp_adaptive clamp_adaptive_early clamp_adaptive2)
 
 parallel=1
 if [[ "${1:-}" == "-j" ]]; then
