@@ -134,8 +134,9 @@ main(int argc, char **argv)
   const double cells_coarse = coarse.at("cells").back();
   const double cells_box    = box.at("cells").back();
   const double cells_end    = adapted.at("cells").back();
-  const double F_coarse = coarse.at("F2_z").back(), F_box = box.at("F2_z").back(),
-               F_adapted = adapted.at("F2_z").back();
+  const double F_coarse     = coarse.at("F2_z").back(),
+               F_box        = box.at("F2_z").back(),
+               F_adapted    = adapted.at("F2_z").back();
   const bool same_end = std::abs(adapted.at("time").back() - 64.) < 1e-12 &&
                         std::abs(box.at("time").back() - 64.) < 1e-12 &&
                         std::abs(coarse.at("time").back() - 64.) < 1e-12;
@@ -170,7 +171,7 @@ main(int argc, char **argv)
             << ", box " << F_box << " N; max alpha coarse "
             << coarse.at("max_alpha").back() << ", adaptive "
             << adapted.at("max_alpha").back() << ", box "
-            << box.at("max_alpha").back() << "; worst balance "
-            << worst_balance << ", min s change " << min_s_change
-            << ", worst force " << worst_force << std::endl;
+            << box.at("max_alpha").back() << "; worst balance " << worst_balance
+            << ", min s change " << min_s_change << ", worst force "
+            << worst_force << std::endl;
 }
