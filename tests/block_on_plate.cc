@@ -46,30 +46,18 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out = Testing::open_output();
 
-  std::stringstream prm;
-  prm << Testing::shipped_scene("block_on_plate.prm");
-  prm << R"(
-subsection Mesh
-  subsection Two bodies
-    set Plate subdivisions = 8, 5, 1
-    set Block subdivisions = 2, 2, 2
-  end
-end
-subsection Load stepping
-  set Time step = 4
-  set End time  = 64
-end
+  const Testing::Table t =
+    Testing::run_scene(Testing::coarse_block_on_plate_prm(R"(
 subsection Newton
   set Check tangent = true
 end
 subsection Output
-  set Interval     = 0
   set Probe points = 0.28, 0.1, 0.02; 0.15, 0.1, 0.02; 0.035, 0.1, 0.02; 0.3, 0.1, 0.02
 end
-)";
-  const Testing::Table t = Testing::run_scene(prm.str(), "block_on_plate_run");
-  const std::size_t    n = t.at("time").size();
-  const auto           at_end = [&](const std::string &name) {
+)"),
+                       "block_on_plate_run");
+  const std::size_t n      = t.at("time").size();
+  const auto        at_end = [&](const std::string &name) {
     return t.at(name)[n - 1];
   };
 

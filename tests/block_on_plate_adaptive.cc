@@ -32,46 +32,6 @@
 
 using namespace dealii;
 
-namespace
-{
-  std::string
-  coarse_scene(const std::string &extra)
-  {
-    return Testing::shipped_scene("block_on_plate.prm") + R"(
-subsection Mesh
-  subsection Two bodies
-    set Plate subdivisions = 8, 5, 1
-    set Block subdivisions = 2, 2, 2
-  end
-end
-subsection Load stepping
-  set Time step = 4
-  set End time  = 64
-end
-subsection Output
-  set Interval = 0
-end
-)" + extra;
-  }
-
-  /// Largest difference of column @p name between rows [0, rows) of @p a
-  /// and @p b, relative to the largest magnitude in @p a's column.
-  double
-  difference(const Testing::Table &a,
-             const Testing::Table &b,
-             const std::string    &name,
-             const std::size_t     rows)
-  {
-    double scale = 0, diff = 0;
-    for (std::size_t k = 0; k < rows; ++k)
-      {
-        scale = std::max(scale, std::abs(a.at(name)[k]));
-        diff  = std::max(diff, std::abs(a.at(name)[k] - b.at(name)[k]));
-      }
-    return scale > 0 ? diff / scale : diff;
-  }
-} // namespace
-
 int
 main(int argc, char **argv)
 {
@@ -87,12 +47,14 @@ main(int argc, char **argv)
            "    set Hardening threshold = " +
            threshold + "\n    set Maximum level = 1\n  end\nend\n";
   };
-  const Testing::Table coarse =
-    Testing::run_scene(coarse_scene(refinement("1e30", "")), "coarse");
-  const Testing::Table box = Testing::run_scene(
-    coarse_scene(refinement("1e30", "0.22,0,0 : 0.3,0.2,0.02 : 1")), "box");
-  const Testing::Table adapted =
-    Testing::run_scene(coarse_scene(refinement("5e-4", "")), "adaptive");
+  const Testing::Table coarse = Testing::run_scene(
+    Testing::coarse_block_on_plate_prm(refinement("1e30", "")), "coarse");
+  const Testing::Table box =
+    Testing::run_scene(Testing::coarse_block_on_plate_prm(
+                         refinement("1e30", "0.22,0,0 : 0.3,0.2,0.02 : 1")),
+                       "box");
+  const Testing::Table adapted = Testing::run_scene(
+    Testing::coarse_block_on_plate_prm(refinement("5e-4", "")), "adaptive");
 
   const std::size_t n = adapted.at("time").size();
   // The first row (step) whose mesh differs from the coarse one.
@@ -107,8 +69,9 @@ main(int argc, char **argv)
   for (const auto &[name, column] : coarse)
     if (name.find("time") == std::string::npos &&
         name.find("iterations") == std::string::npos && name != "newton_rate")
-      worst_before = std::max(worst_before,
-                              difference(coarse, adapted, name, first_refined));
+      worst_before = std::max(
+        worst_before,
+        Testing::column_difference(coarse, adapted, name, first_refined));
   unsigned int refining_steps = 0;
   double       worst_balance = 0, worst_force = 0, min_s_change = 0;
   for (std::size_t k = 1; k < n; ++k)

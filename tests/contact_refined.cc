@@ -153,23 +153,6 @@ subsection Output
 end
 )";
   }
-
-  /// Largest difference of column @p name of two runs relative to the
-  /// largest magnitude in @p a's column; infinity when the steps differ.
-  double
-  difference(const Testing::Table &a,
-             const Testing::Table &b,
-             const std::string    &name)
-  {
-    if (a.at("time") != b.at("time"))
-      return std::numeric_limits<double>::infinity();
-    double scale = 0, worst = 0;
-    for (const double v : a.at(name))
-      scale = std::max(scale, std::abs(v));
-    for (unsigned int n = 0; n < a.at(name).size(); ++n)
-      worst = std::max(worst, std::abs(a.at(name)[n] - b.at(name)[n]));
-    return scale > 0. ? worst / scale : worst;
-  }
 } // namespace
 
 int
@@ -285,7 +268,7 @@ end
   double                         worst   = 0;
   for (const std::string &c : columns)
     {
-      const double d = difference(fixed, adapted, c);
+      const double d = Testing::column_difference(fixed, adapted, c);
       std::cout << "adaptive: " << c << " differs by " << d << std::endl;
       worst = std::max(worst, d);
     }

@@ -13,11 +13,13 @@
 #include <ductile_contact/materials/plasticity.h>
 #include <ductile_contact/output/tee_stream.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -351,6 +353,61 @@ end
     for (const char *c : {"_x", "_y", "_z"})
       sum += std::pow(s.at("contact1_" + what + c)[n], 2);
     return std::sqrt(sum);
+  }
+
+  /**
+   * Largest difference of column @p name between the first @p rows rows
+   * (all when omitted) of runs @p a and @p b, relative to the largest
+   * magnitude in @p a's column over those rows; infinity when the runs'
+   * times differ in those rows (different steps), or, comparing all rows,
+   * when the runs have different numbers of rows.
+   */
+  inline double
+  column_difference(const Table       &a,
+                    const Table       &b,
+                    const std::string &name,
+                    std::size_t        rows = std::size_t(-1))
+  {
+    const bool all = rows == std::size_t(-1);
+    rows           = std::min(rows, a.at("time").size());
+    if ((all ? b.at("time").size() != rows : b.at("time").size() < rows) ||
+        !std::equal(a.at("time").begin(),
+                    a.at("time").begin() + rows,
+                    b.at("time").begin()))
+      return std::numeric_limits<double>::infinity();
+    double scale = 0, worst = 0;
+    for (std::size_t k = 0; k < rows; ++k)
+      {
+        scale = std::max(scale, std::abs(a.at(name)[k]));
+        worst = std::max(worst, std::abs(a.at(name)[k] - b.at(name)[k]));
+      }
+    return scale > 0. ? worst / scale : worst;
+  }
+
+  /**
+   * .prm text of the coarse copy of the paper's scene (prm/block_on_plate.prm
+   * on plate 8 x 5 x 1 and block 2 x 2 x 2 cells, 16 steps of 0.6 mm to
+   * 9.6 mm, no field output) used by block_on_plate and
+   * block_on_plate_adaptive; @p extra is appended (later entries win).
+   */
+  inline std::string
+  coarse_block_on_plate_prm(const std::string &extra = "")
+  {
+    return shipped_scene("block_on_plate.prm") + R"(
+subsection Mesh
+  subsection Two bodies
+    set Plate subdivisions = 8, 5, 1
+    set Block subdivisions = 2, 2, 2
+  end
+end
+subsection Load stepping
+  set Time step = 4
+  set End time  = 64
+end
+subsection Output
+  set Interval = 0
+end
+)" + extra;
   }
 
   /**
