@@ -1,5 +1,6 @@
 #include <ductile_contact/assembly/cell_rows.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace DuctileContact
@@ -26,12 +27,19 @@ namespace DuctileContact
                       const LocalDofs     &dofs)
   {
     u_grad.resize(dofs.u.size());
-    grad_times_A.resize(dofs.u.size());
     alpha_value.resize(dofs.alpha.size());
     alpha_grad.resize(dofs.alpha.size());
     s_value.resize(dofs.s.size());
+    const unsigned int n_nodes = dofs.u.size() / dim;
+    for (unsigned int d = 0; d < dim; ++d)
+      node_grad[d].resize(n_nodes);
     for (unsigned int k = 0; k < dofs.u.size(); ++k)
-      u_grad[k] = fe_values.shape_grad(dofs.u[k], q);
+      {
+        u_grad[k] = fe_values.shape_grad(dofs.u[k], q);
+      }
+    for (unsigned int j = 0; j < n_nodes; ++j)
+      for (unsigned int d = 0; d < dim; ++d)
+        node_grad[d][j] = fe_values.shape_grad(dofs.u_by_component[0][j], q)[d];
     for (unsigned int k = 0; k < dofs.alpha.size(); ++k)
       {
         alpha_value[k] = fe_values.shape_value(dofs.alpha[k], q);
@@ -58,13 +66,25 @@ namespace DuctileContact
   void
   add_displacement_rows(const MaterialResponse &m,
                         const BodyParameters   &body,
-                        PointShapes            &shapes,
+                        const PointShapes      &shapes,
                         const LocalDofs        &dofs,
+                        const unsigned int      q,
                         const double            JxW,
                         const bool              tangent,
                         LocalRows              &rows)
   {
-    const unsigned int n_u = dofs.u.size();
+    const unsigned int              n_u = dofs.u.size();
+    std::array<double *, dim * dim> left{};
+    if (tangent)
+      for (unsigned int c = 0; c < dim; ++c)
+        for (unsigned int D = 0; D < dim; ++D)
+          {
+            left[c * dim + D] = rows.blocks.u_u[c].left(q, D);
+            double *right     = rows.blocks.u_u[c].right(q, D);
+            std::copy(shapes.node_grad[D].begin(),
+                      shapes.node_grad[D].end(),
+                      right);
+          }
     for (unsigned int k = 0; k < n_u; ++k)
       {
         const Tensor<1, dim> &grad = shapes.u_grad[k];
@@ -76,34 +96,19 @@ namespace DuctileContact
         rows.magnitude(dofs.u[k]) +=
           (std::abs(term) +
            (body.shear_modulus + body.bulk_modulus) * grad.norm() * JxW);
-        if (tangent)
-          for (unsigned int c = 0; c < dim; ++c)
-            for (unsigned int D = 0; D < dim; ++D)
-              {
-                double sum = 0;
-                for (unsigned int B = 0; B < dim; ++B)
-                  sum += grad[B] * m.dP_dF[a][B][c][D];
-                shapes.grad_times_A[k][c][D] = sum * JxW;
-              }
-      }
-    if (tangent && m.symmetric_tangent)
-      for (unsigned int k = 0; k < n_u; ++k)
-        {
-          rows.matrix(dofs.u[k], dofs.u[k]) +=
-            shapes.grad_times_A[k][dofs.u_component[k]] * shapes.u_grad[k];
-          for (unsigned int l = k + 1; l < n_u; ++l)
+        if (!tangent)
+          continue;
+        // sum_B dN_k/dX_B dP_aB/dF_cD JxW: the row of DoF k against the
+        // node gradients dN_j/dX_D of component c.
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int D = 0; D < dim; ++D)
             {
-              const double v =
-                shapes.grad_times_A[k][dofs.u_component[l]] * shapes.u_grad[l];
-              rows.matrix(dofs.u[k], dofs.u[l]) += v;
-              rows.matrix(dofs.u[l], dofs.u[k]) += v;
+              double v = 0;
+              for (unsigned int B = 0; B < dim; ++B)
+                v += grad[B] * m.dP_dF[a][B][c][D];
+              left[c * dim + D][k] = v * JxW;
             }
-        }
-    else if (tangent)
-      for (unsigned int k = 0; k < n_u; ++k)
-        for (unsigned int l = 0; l < n_u; ++l)
-          rows.matrix(dofs.u[k], dofs.u[l]) +=
-            shapes.grad_times_A[k][dofs.u_component[l]] * shapes.u_grad[l];
+      }
   }
 
 
@@ -115,6 +120,7 @@ namespace DuctileContact
                      const Tensor<1, dim>       &grad_alpha,
                      const PointShapes          &shapes,
                      const LocalDofs            &dofs,
+                     const unsigned int          q,
                      const double                JxW,
                      const bool                  tangent,
                      LocalRows                  &rows)
@@ -135,27 +141,46 @@ namespace DuctileContact
           (std::abs(m.r) + plastic.shear_modulus + plastic.bulk_modulus) *
             std::abs(a_value[k]) * JxW +
           std::abs(gradient_coefficient * (a_grad[k] * grad_alpha)) * JxW;
-        if (!tangent)
-          continue;
-        for (unsigned int l = 0; l < n_u; ++l)
-          rows.matrix(i, dofs.u[l]) +=
-            a_value[k] * (m.dr_dF[dofs.u_component[l]] * shapes.u_grad[l]) *
-            JxW;
-        for (unsigned int l = 0; l < n_a; ++l)
-          rows.matrix(i, dofs.alpha[l]) +=
-            (m.dr_dalpha * a_value[k] * a_value[l] +
-             gradient_coefficient * (a_grad[k] * a_grad[l])) *
-            JxW;
-        for (unsigned int l = 0; l < n_s; ++l)
-          rows.matrix(i, dofs.s[l]) +=
-            m.dr_ds * a_value[k] * shapes.s_value[l] * JxW;
       }
-    if (tangent)
-      for (unsigned int k = 0; k < n_u; ++k)
-        for (unsigned int l = 0; l < n_a; ++l)
-          rows.matrix(dofs.u[k], dofs.alpha[l]) +=
-            (m.dP_dalpha[dofs.u_component[k]] * shapes.u_grad[k]) * a_value[l] *
-            JxW;
+    if (!tangent)
+      return;
+    CellTangentBlocks &blocks = rows.blocks;
+    // alpha-u: N_k dr/dF : Grad dv; u-alpha: dP/dalpha : Grad N_k N_l.
+    double *alpha_u_left  = blocks.alpha_u.left(q, 0);
+    double *alpha_u_right = blocks.alpha_u.right(q, 0);
+    double *u_alpha_left  = blocks.u_alpha.left(q, 0);
+    for (unsigned int l = 0; l < n_u; ++l)
+      {
+        const unsigned int c = dofs.u_component[l];
+        alpha_u_right[l]     = m.dr_dF[c] * shapes.u_grad[l];
+        u_alpha_left[l]      = (m.dP_dalpha[c] * shapes.u_grad[l]) * JxW;
+      }
+    std::copy(a_value.begin(), a_value.end(), blocks.u_alpha.right(q, 0));
+    // alpha-alpha: dr/dalpha N_k N_l + y_0 l_p^2 Grad N_k . Grad N_l;
+    // alpha-s: dr/ds N_k N_l.
+    double *aa_left = blocks.alpha_alpha.left(q, 0);
+    double *as_left = blocks.alpha_s.left(q, 0);
+    for (unsigned int k = 0; k < n_a; ++k)
+      {
+        alpha_u_left[k] = a_value[k] * JxW;
+        aa_left[k]      = m.dr_dalpha * a_value[k] * JxW;
+        as_left[k]      = m.dr_ds * a_value[k] * JxW;
+      }
+    std::copy(a_value.begin(), a_value.end(), blocks.alpha_alpha.right(q, 0));
+    for (unsigned int D = 0; D < dim; ++D)
+      {
+        double *left  = blocks.alpha_alpha.left(q, 1 + D);
+        double *right = blocks.alpha_alpha.right(q, 1 + D);
+        for (unsigned int k = 0; k < n_a; ++k)
+          {
+            left[k]  = gradient_coefficient * a_grad[k][D] * JxW;
+            right[k] = a_grad[k][D];
+          }
+      }
+    if (n_s > 0)
+      std::copy(shapes.s_value.begin(),
+                shapes.s_value.end(),
+                blocks.alpha_s.right(q, 0));
   }
 
 
@@ -168,6 +193,7 @@ namespace DuctileContact
                        const double            dt,
                        const PointShapes      &shapes,
                        const LocalDofs        &dofs,
+                       const unsigned int      q,
                        const double            JxW,
                        const bool              tangent,
                        LocalRows              &rows)
@@ -178,12 +204,6 @@ namespace DuctileContact
     const double g1 = driver.g1, psi_H = driver.psi_H;
     const double scale =
       body.crack.critical_energy_release_rate / (2. * body.crack.length_scale);
-    // d(g' psi_H)/ds = g'' psi_H + g' dpsi_D/ds when loading (psi^+
-    // depends on s at points that do not yield, see
-    // MaterialResponse::dpsi_plus_ds).
-    const DrivingEnergy &psi = driver.psi;
-    const double         ds_coefficient =
-      eta_f / dt + driver.g2 * psi_H + (driver.loading ? g1 * psi.d_ds : 0.);
     const auto &s_value = shapes.s_value;
     for (unsigned int k = 0; k < n_s; ++k)
       {
@@ -192,28 +212,43 @@ namespace DuctileContact
         rows.scale_s(i) += scale * s_value[k] * JxW;
         rows.magnitude(i) += (std::abs(eta_f * rate) + std::abs(g1 * psi_H)) *
                              std::abs(s_value[k]) * JxW;
-        if (!tangent)
-          continue;
-        for (unsigned int l = 0; l < n_s; ++l)
-          rows.matrix(i, dofs.s[l]) +=
-            ds_coefficient * s_value[k] * s_value[l] * JxW;
-        if (driver.loading)
-          {
-            for (unsigned int l = 0; l < n_u; ++l)
-              rows.matrix(i, dofs.u[l]) +=
-                g1 * s_value[k] *
-                (psi.d_dF[dofs.u_component[l]] * shapes.u_grad[l]) * JxW;
-            for (unsigned int l = 0; l < n_a; ++l)
-              rows.matrix(i, dofs.alpha[l]) +=
-                g1 * psi.d_dalpha * s_value[k] * shapes.alpha_value[l] * JxW;
-          }
       }
-    if (tangent)
-      for (unsigned int k = 0; k < n_u; ++k)
-        for (unsigned int l = 0; l < n_s; ++l)
-          rows.matrix(dofs.u[k], dofs.s[l]) +=
-            (m.dP_ds[dofs.u_component[k]] * shapes.u_grad[k]) * s_value[l] *
-            JxW;
+    if (!tangent)
+      return;
+    CellTangentBlocks &blocks = rows.blocks;
+    // d(g' psi_H)/ds = g'' psi_H + g' dpsi_D/ds when loading (psi^+
+    // depends on s at points that do not yield, see
+    // MaterialResponse::dpsi_plus_ds).
+    const DrivingEnergy &psi = driver.psi;
+    const double         ds_coefficient =
+      eta_f / dt + driver.g2 * psi_H + (driver.loading ? g1 * psi.d_ds : 0.);
+    double *ss_left = blocks.s_s.left(q, 0);
+    for (unsigned int k = 0; k < n_s; ++k)
+      ss_left[k] = ds_coefficient * s_value[k] * JxW;
+    std::copy(s_value.begin(), s_value.end(), blocks.s_s.right(q, 0));
+    // u-s: dP/ds : Grad N_k N_l.
+    double *us_left = blocks.u_s.left(q, 0);
+    for (unsigned int k = 0; k < n_u; ++k)
+      us_left[k] = (m.dP_ds[dofs.u_component[k]] * shapes.u_grad[k]) * JxW;
+    std::copy(s_value.begin(), s_value.end(), blocks.u_s.right(q, 0));
+    if (!driver.loading)
+      return;
+    // s-u and s-alpha: g' N_k dpsi_D/dF : Grad dv, g' N_k dpsi_D/dalpha N_l.
+    double *su_left  = blocks.s_u.left(q, 0);
+    double *su_right = blocks.s_u.right(q, 0);
+    for (unsigned int k = 0; k < n_s; ++k)
+      su_left[k] = g1 * s_value[k] * JxW;
+    for (unsigned int l = 0; l < n_u; ++l)
+      su_right[l] = psi.d_dF[dofs.u_component[l]] * shapes.u_grad[l];
+    if (n_a > 0)
+      {
+        double *sa_left = blocks.s_alpha.left(q, 0);
+        for (unsigned int k = 0; k < n_s; ++k)
+          sa_left[k] = g1 * psi.d_dalpha * s_value[k] * JxW;
+        std::copy(shapes.alpha_value.begin(),
+                  shapes.alpha_value.end(),
+                  blocks.s_alpha.right(q, 0));
+      }
   }
 
 

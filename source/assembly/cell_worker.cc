@@ -313,6 +313,7 @@ namespace DuctileContact
                        scratch.grad_alpha[q],
                        scratch.shapes,
                        dofs,
+                       q,
                        JxW,
                        tangent,
                        rows);
@@ -357,6 +358,7 @@ namespace DuctileContact
                          dt,
                          scratch.shapes,
                          dofs,
+                         q,
                          JxW,
                          targets && targets->tangent,
                          rows);
@@ -413,6 +415,8 @@ namespace DuctileContact
                                   : nullptr;
     if (mode == Branches::record && (has_alpha || has_s))
       targets->branch_record->start_cell(index, n_q);
+    if (tangent)
+      rows.blocks.reinit(dofs, n_q);
 
     double volume = 0, vm = 0, mean = 0, mean_J = 0, driver_sum = 0;
     for (unsigned int q = 0; q < n_q; ++q)
@@ -459,7 +463,7 @@ namespace DuctileContact
 
         scratch.shapes.reinit(fe_values, q, dofs);
         add_displacement_rows(
-          m, body, scratch.shapes, dofs, JxW, tangent, rows);
+          m, body, scratch.shapes, dofs, q, JxW, tangent, rows);
 
         if (has_alpha)
           hardening_point(m,
@@ -510,7 +514,9 @@ namespace DuctileContact
           }
         return;
       }
-    finish_rows(cell, fe_values, body, dofs, scratch, copy, pass);
+    if (tangent)
+      rows.add_blocks(dofs);
+    finish_rows(cell, body, dofs, scratch, copy, pass);
   }
 
 
@@ -518,7 +524,6 @@ namespace DuctileContact
   void
   SystemAssembler::finish_rows(
     const DoFHandler<dim>::active_cell_iterator &cell,
-    const FEValues<dim>                         &fe_values,
     const BodyParameters                        &body,
     const LocalDofs                             &dofs,
     CellScratch                                 &scratch,
@@ -612,12 +617,15 @@ namespace DuctileContact
 
 
 
-  void
-  SystemAssembler::face_terms(const DoFHandler<dim>::active_cell_iterator &cell,
-                              CellScratch &scratch,
-                              CellCopy    &copy,
-                              const Pass  &pass) const
+  const std::vector<SystemAssembler::FaceMatrix> &
+  SystemAssembler::face_matrices(
+    const DoFHandler<dim>::active_cell_iterator &cell,
+    CellScratch                                 &scratch) const
   {
+    CellFaceMatrices &cached = cell_face_matrices[cell->active_cell_index()];
+    if (cached.computed)
+      return cached.faces;
+
     // The s block starts after u and alpha in the global numbering.
     const types::global_dof_index first_s =
       discretisation.dofs_per_block[Block::displacement] +
@@ -625,6 +633,7 @@ namespace DuctileContact
     const BodyParameters   &body = *bodies.at(cell->material_id());
     FEInterfaceValues<dim> &fiv =
       *scratch.interface_values[cell->active_fe_index()];
+    cached.faces.clear();
     for_each_owned_interior_face(
       cell,
       fiv,
@@ -645,24 +654,46 @@ namespace DuctileContact
         for (unsigned int i = 0; i < n; ++i)
           if (indices[i] >= first_s)
             s_local.push_back(i);
-        const unsigned int m = s_local.size();
+        const unsigned int m    = s_local.size();
+        FaceMatrix        &face = cached.faces.emplace_back();
+        face.indices.resize(m);
+        face.matrix.reinit(m, m);
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            face.indices[k] = indices[s_local[k]];
+            for (unsigned int l = 0; l < m; ++l)
+              face.matrix(k, l) = scratch.face_matrix(s_local[k], s_local[l]);
+          }
+      });
+    cached.computed = true;
+    return cached.faces;
+  }
+
+
+
+  void
+  SystemAssembler::face_terms(const DoFHandler<dim>::active_cell_iterator &cell,
+                              CellScratch &scratch,
+                              CellCopy    &copy,
+                              const Pass  &pass) const
+  {
+    for (const FaceMatrix &cached : face_matrices(cell, scratch))
+      {
+        const unsigned int m = cached.indices.size();
         if (copy.faces.size() <= copy.n_faces)
           copy.faces.emplace_back();
         LocalRows &face = copy.faces[copy.n_faces++];
         face.reinit(m);
+        face.indices             = cached.indices;
+        face.matrix              = cached.matrix;
         Vector<double> &s_values = scratch.face_s_values;
         s_values.reinit(m);
         for (unsigned int k = 0; k < m; ++k)
-          {
-            face.indices[k] = indices[s_local[k]];
-            s_values(k)     = (*pass.u)(face.indices[k]);
-            for (unsigned int l = 0; l < m; ++l)
-              face.matrix(k, l) = scratch.face_matrix(s_local[k], s_local[l]);
-          }
+          s_values(k) = (*pass.u)(face.indices[k]);
         face.matrix.vmult(face.f_int, s_values);
         copy.sums.fracture_energy += 0.5 * (s_values * face.f_int);
         face.rhs = face.f_int;
         face.rhs *= -1.;
-      });
+      }
   }
 } // namespace DuctileContact

@@ -37,8 +37,11 @@ namespace DuctileContact
     for (const BoundaryCondition &bc : boundary_conditions)
       if (bc.has_traction)
         tractions[bc.boundary_id] = &bc;
-    mesh_changed = discretisation.triangulation.signals.any_change.connect(
-      [this]() { crack_matrices.clear(); });
+    mesh_changed =
+      discretisation.triangulation.signals.any_change.connect([this]() {
+        crack_matrices.clear();
+        cell_face_matrices.clear();
+      });
   }
 
 
@@ -159,6 +162,7 @@ namespace DuctileContact
       scratch = std::make_unique<CellScratch>(discretisation);
     // Sized before the loop: the workers only fill their own cell's entry.
     crack_matrices.resize(discretisation.triangulation.n_active_cells());
+    cell_face_matrices.resize(discretisation.triangulation.n_active_cells());
     if (MultithreadInfo::n_threads() == 1)
       {
         // The cached scratch directly: a copy would build the evaluation

@@ -45,6 +45,11 @@ namespace DuctileContact
               {
                 dofs.u.push_back(i);
                 dofs.u_component.push_back(c);
+                const unsigned int node =
+                  fe.system_to_component_index(i).second;
+                if (dofs.u_by_component[c].size() <= node)
+                  dofs.u_by_component[c].resize(node + 1);
+                dofs.u_by_component[c][node] = i;
               }
             else if (c == Component::hardening)
               dofs.alpha.push_back(i);

@@ -5,11 +5,13 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <ductile_contact/assembly/point_products.h>
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/materials/body_material.h>
 #include <ductile_contact/materials/body_parameters.h>
 #include <ductile_contact/phase_field/c0ip.h>
 
+#include <array>
 #include <vector>
 
 namespace DuctileContact
@@ -27,9 +29,19 @@ namespace DuctileContact
     dealii::Vector<double>                       f_int, rhs, magnitude;
     dealii::Vector<double>                       scale_alpha, scale_s;
     std::vector<dealii::types::global_dof_index> indices;
+    /// What the points of a cell add to `matrix`, gathered by block and
+    /// added by add_blocks() when the cell is done.
+    CellTangentBlocks blocks;
 
     void
     reinit(const unsigned int n_dofs);
+
+    /// Adds `blocks` to `matrix`.
+    void
+    add_blocks(const LocalDofs &dofs)
+    {
+      blocks.add_to(dofs, matrix);
+    }
   };
 
   /// Shape functions of one quadrature point by field (scratch of the
@@ -37,10 +49,12 @@ namespace DuctileContact
   struct PointShapes
   {
     std::vector<dealii::Tensor<1, dim>> u_grad;
-    std::vector<double>                 alpha_value, s_value;
-    std::vector<dealii::Tensor<1, dim>> alpha_grad;
-    /// Grad N_k : dP/dF JxW per displacement DoF (rows of the u-u block).
-    std::vector<dealii::Tensor<2, dim>> grad_times_A;
+    /// The gradient of each node's scalar shape function by direction:
+    /// node_grad[D][j] (the u_grad of the node's DoFs; the right factors
+    /// of the u-u block, CellTangentBlocks).
+    std::array<std::vector<double>, dim> node_grad;
+    std::vector<double>                  alpha_value, s_value;
+    std::vector<dealii::Tensor<1, dim>>  alpha_grad;
 
     /// The shapes of point @p q of @p fe_values for the DoFs @p dofs.
     void
@@ -64,13 +78,14 @@ namespace DuctileContact
   C0IPCoefficients
   crack_coefficients(const BodyParameters &body, const unsigned int degree);
 
-  /// Displacement rows int P : Grad du dV at one point and their tangent
-  /// dP/dF (u-u block).
+  /// Displacement rows int P : Grad du dV at point @p q, and their
+  /// tangent dP/dF (u-u block).
   void
   add_displacement_rows(const MaterialResponse &m,
                         const BodyParameters   &body,
-                        PointShapes            &shapes,
+                        const PointShapes      &shapes,
                         const LocalDofs        &dofs,
+                        const unsigned int      q,
                         const double            JxW,
                         const bool              tangent,
                         LocalRows              &rows);
@@ -85,6 +100,7 @@ namespace DuctileContact
                      const dealii::Tensor<1, dim> &grad_alpha,
                      const PointShapes            &shapes,
                      const LocalDofs              &dofs,
+                     const unsigned int            q,
                      const double                  JxW,
                      const bool                    tangent,
                      LocalRows                    &rows);
@@ -100,6 +116,7 @@ namespace DuctileContact
                        const double            dt,
                        const PointShapes      &shapes,
                        const LocalDofs        &dofs,
+                       const unsigned int      q,
                        const double            JxW,
                        const bool              tangent,
                        LocalRows              &rows);

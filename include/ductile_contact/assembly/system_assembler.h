@@ -166,7 +166,6 @@ namespace DuctileContact
     /// magnitudes, -R, the tractions and the C0IP faces of the cell.
     void
     finish_rows(const dealii::DoFHandler<dim>::active_cell_iterator &cell,
-                const dealii::FEValues<dim>                         &fe_values,
                 const BodyParameters                                &body,
                 const LocalDofs                                     &dofs,
                 CellScratch                                         &scratch,
@@ -207,7 +206,35 @@ namespace DuctileContact
     /// changes. Each cell's entry is written only by the pass over that
     /// cell, so threads do not share entries.
     mutable std::vector<dealii::FullMatrix<double>> crack_matrices;
-    boost::signals2::connection                     mesh_changed;
+
+    /// The s-s block of the C0IP face matrix of one interior face (the
+    /// jump and average terms of the crack functional, eq. (C0IP) of
+    /// doc/model.md) and the global s DoFs it couples.
+    struct FaceMatrix
+    {
+      std::vector<dealii::types::global_dof_index> indices;
+      dealii::FullMatrix<double>                   matrix;
+    };
+    /// The face matrices of the interior faces that a cell owns.
+    struct CellFaceMatrices
+    {
+      bool                    computed = false;
+      std::vector<FaceMatrix> faces;
+    };
+    /// The face matrices of the interior faces that @p cell owns
+    /// (for_each_owned_interior_face()), computed on first use after a
+    /// change of the mesh and kept like crack_matrix(): they depend on the
+    /// two cells and l_f only. Evaluating them takes FEInterfaceValues
+    /// with the hessians of every shape function of both cells, which
+    /// cost ~15 % of a phase-field run when it was done in every pass.
+    const std::vector<FaceMatrix> &
+    face_matrices(const dealii::DoFHandler<dim>::active_cell_iterator &cell,
+                  CellScratch &scratch) const;
+
+    /// face_matrices() per active cell index, sized and cleared with
+    /// crack_matrices (same ownership rule).
+    mutable std::vector<CellFaceMatrices> cell_face_matrices;
+    boost::signals2::connection           mesh_changed;
 
     /// Traction boundaries, looked up per face.
     std::map<dealii::types::boundary_id, const BoundaryCondition *> tractions;

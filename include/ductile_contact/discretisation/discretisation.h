@@ -12,6 +12,7 @@
 
 #include <ductile_contact/core/types.h>
 
+#include <array>
 #include <map>
 #include <vector>
 
@@ -29,6 +30,9 @@ namespace DuctileContact
   struct LocalDofs
   {
     std::vector<unsigned int> u, u_component, alpha, s;
+    /// The displacement DoFs of each component ordered by node (the index
+    /// of their shape function in the scalar element).
+    std::array<std::vector<unsigned int>, dim> u_by_component;
   };
 
   /**
