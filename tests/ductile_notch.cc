@@ -29,7 +29,22 @@
 //  - Newton converges quadratically: the observed order has a median above
 //    1.7 over the steps where it is defined, also over the steps of the
 //    crack's run (four or more iterations).
-// One MPI rank only (~2 min; MUMPS is slower on 2 ranks for this size).
+// Then the same scene from a uniform mesh of h = 2 l_f = 0.2 mm
+// (tests/meshes/ductile_notch_h0.2.msh, `make_sent.py 0.2 0.4 ... 1.0 2`),
+// refined during the run to level 1 (h = l_f) where alpha > 0.002 or
+// s > 0.2 (issue #28; benchmarks/adaptive_refinement/ductile_notch):
+//  - every check above holds for it too;
+//  - it refines in more than one step: first while the zone yields (alpha >
+//    0.002, s < 0.2), later also where s > 0.2 (the history of C^p,
+//    alpha_n and psi^+ carried each time);
+//  - per unit thickness (its slab is 0.2 mm thick, the graded one 0.1 mm):
+//    its force peak is that of the graded mesh to 0.5 % (0.03 % here), and
+//    its force is within 1 % of it at every common step from its first
+//    refinement to the peak (0.4 % here; before the first refinement the
+//    coarse mesh is up to 2 % stiffer);
+//  - at the end its crack energy and plastic work are those of the graded
+//    mesh to 2 % (0.5 % and 0.2 % here).
+// One MPI rank only (~1 min; MUMPS is slower on 2 ranks for this size).
 // The terms of the coupling are local to quadrature points; that the
 // plastic and the fracture assembly (ghosted alpha and s, C0IP faces,
 // quadrature-point history) give identical results on 1 and 2 ranks is
@@ -41,85 +56,193 @@
 
 using namespace dealii;
 
+namespace
+{
+  constexpr double ligament = 5e-4, g_c = 2800;
+  /// The slabs' thicknesses (one element layer): the graded mesh and the
+  /// uniform coarse one.
+  constexpr double graded_thickness = 1e-4, coarse_thickness = 2e-4;
+
+  /// The ductile notch pulled to 20.4 um on @p mesh, with @p extra entries.
+  Testing::Table
+  pull(const std::string &mesh,
+       const std::string &extra,
+       const std::string &directory)
+  {
+    std::stringstream prm;
+    prm << Testing::shipped_scene("ductile_notch.prm");
+    prm << Testing::file_text(SOURCE_DIR "/ductile_notch_coarse.prm");
+    prm << "subsection Mesh\n  subsection Gmsh\n    set File name = "
+        << SOURCE_DIR << "/meshes/" << mesh << "\n  end\nend\n"
+        << "subsection Load stepping\n  set End time = 0.68\nend\n"
+        << extra;
+    return Testing::run_scene(prm.str(), directory);
+  }
+
+  std::size_t
+  peak_step(const Testing::Table &t)
+  {
+    const auto &F = t.at("F2_y");
+    return std::max_element(F.begin(), F.end()) - F.begin();
+  }
+
+  /// The checks of one run (see the header); prints them to @p out and
+  /// its numbers to the screen.
+  void
+  check_run(std::ostream &out, const Testing::Table &t, const double thickness)
+  {
+    const auto         &F             = t.at("F2_y");
+    const std::size_t   n             = F.size();
+    const std::size_t   k_max         = peak_step(t);
+    const double        peak          = F[k_max];
+    const double        W_ext         = t.at("external_work")[n - 1];
+    double              worst_balance = 0, min_s_change = 0;
+    std::vector<double> rates, crack_rates;
+    for (std::size_t k = 1; k < n; ++k)
+      {
+        worst_balance     = std::max(worst_balance,
+                                 std::abs(t.at("energy_residual")[k]) /
+                                   std::max(t.at("external_work")[k], 1e-300));
+        min_s_change      = std::min(min_s_change, t.at("min_s_change")[k]);
+        const double rate = t.at("newton_rate")[k];
+        if (rate > 0.)
+          {
+            rates.push_back(rate);
+            if (t.at("newton_iterations")[k] >= 4)
+              crack_rates.push_back(rate);
+          }
+      }
+    const auto median = [](std::vector<double> v) {
+      std::sort(v.begin(), v.end());
+      return v.empty() ? 0. : v[v.size() / 2];
+    };
+    const double crack_ratio =
+      t.at("fracture_energy")[n - 1] / (g_c * ligament * thickness);
+    const double plastic_share =
+      t.at("plastic_work")[k_max] / t.at("external_work")[k_max];
+
+    out << "end reached (20.4 um): "
+        << Testing::yes_no(std::abs(t.at("time")[n - 1] - 0.68) < 1e-12) << "\n"
+        << "yields before it cracks (at the peak alpha > 1 %, W_p > W_ext/3): "
+        << Testing::yes_no(t.at("max_alpha")[k_max] > 0.01 &&
+                           plastic_share > 1. / 3.)
+        << "\n"
+        << "interior force maximum, force at the end below 20 % of it: "
+        << Testing::yes_no(k_max > 0 && k_max + 1 < n && F[n - 1] < 0.2 * peak)
+        << "\n"
+        << "crack energy 0.8-1.6 x g_c x ligament x thickness: "
+        << Testing::yes_no(crack_ratio > 0.8 && crack_ratio < 1.6) << "\n"
+        << "energy balance closes to 5 % of W_ext at every step: "
+        << Testing::yes_no(worst_balance < 0.05) << "\n"
+        << "s never decreases at any DoF (to the Newton tolerance 1e-8): "
+        << Testing::yes_no(min_s_change > -1e-8) << "\n"
+        << "Newton rate defined in most steps, median > 1.7: "
+        << Testing::yes_no(rates.size() > n / 2 && median(rates) > 1.7) << "\n"
+        << "and over the crack's steps (>= 4 iterations), median > 1.7: "
+        << Testing::yes_no(crack_rates.size() >= 3 && median(crack_rates) > 1.7)
+        << "\n";
+    std::cout << "peak " << peak / thickness * 1e-6
+              << " kN/mm at u = " << t.at("u2_y")[k_max] * 1e6 << " um, alpha "
+              << t.at("max_alpha")[k_max] << ", W_p/W_ext " << plastic_share
+              << "; end force / peak " << F[n - 1] / peak << ", crack energy "
+              << crack_ratio << " g_c A, worst balance " << worst_balance
+              << " W_ext (W_ext " << W_ext << " J), min s change "
+              << min_s_change << ", median rate " << median(rates) << " of "
+              << rates.size() << ", in the crack's steps "
+              << median(crack_rates) << " of " << crack_rates.size()
+              << std::endl;
+  }
+
+  /// The adaptive run against the graded mesh (see the header).
+  void
+  compare(std::ostream         &out,
+          const Testing::Table &graded,
+          const Testing::Table &adapted)
+  {
+    // Per unit thickness.
+    const double      scale = graded_thickness / coarse_thickness;
+    const auto       &cells = adapted.at("cells");
+    const std::size_t n     = cells.size();
+    // The steps in which the mesh was refined, and where the first was.
+    unsigned int refining_steps = 0;
+    std::size_t  first          = n;
+    bool         while_cracking = false;
+    for (std::size_t k = 1; k < n; ++k)
+      if (cells[k] > cells[k - 1])
+        {
+          ++refining_steps;
+          first          = std::min(first, k);
+          while_cracking = while_cracking || adapted.at("max_s")[k] > 0.2;
+        }
+    const std::size_t k_graded  = peak_step(graded),
+                      k_adapted = peak_step(adapted);
+    const double peak_graded    = graded.at("F2_y")[k_graded];
+    const double peak_adapted   = adapted.at("F2_y")[k_adapted] * scale;
+    // Common steps (equal times) from the first refinement to the peak.
+    double worst_force = 0;
+    for (std::size_t k = first; k <= k_adapted && k < n; ++k)
+      for (std::size_t j = 0; j < graded.at("time").size(); ++j)
+        if (std::abs(graded.at("time")[j] - adapted.at("time")[k]) < 1e-12)
+          worst_force = std::max(worst_force,
+                                 std::abs(scale * adapted.at("F2_y")[k] /
+                                            graded.at("F2_y")[j] -
+                                          1.));
+    const auto end_ratio = [&](const std::string &column) {
+      return scale * adapted.at(column).back() / graded.at(column).back();
+    };
+    const double alpha_at_first =
+      adapted.at("max_alpha")[std::min(first, n - 1)];
+    const double s_at_first = adapted.at("max_s")[std::min(first, n - 1)];
+
+    out << "adaptive: refined in more than one step, first where it yields "
+           "(alpha > 0.002, s < 0.2), later where s > 0.2: "
+        << Testing::yes_no(refining_steps > 1 && alpha_at_first > 0.002 &&
+                           s_at_first < 0.2 && while_cracking)
+        << "\n"
+        << "adaptive: force peak that of the graded mesh to 0.5 %: "
+        << Testing::yes_no(std::abs(peak_adapted / peak_graded - 1.) < 5e-3)
+        << "\n"
+        << "adaptive: force within 1 % of the graded mesh's from the first "
+           "refinement to the peak: "
+        << Testing::yes_no(first < k_adapted && worst_force < 0.01) << "\n"
+        << "adaptive: crack energy and plastic work at the end those of the "
+           "graded mesh to 2 %: "
+        << Testing::yes_no(std::abs(end_ratio("fracture_energy") - 1.) < 0.02 &&
+                           std::abs(end_ratio("plastic_work") - 1.) < 0.02)
+        << "\n";
+    std::cout << "adaptive: cells " << cells[0] << " -> " << cells[n - 1]
+              << " (graded mesh 162) in " << refining_steps
+              << " steps, the first at step " << first << " (alpha "
+              << alpha_at_first << "); peak " << peak_adapted << " / "
+              << peak_graded
+              << " N (per the graded slab's thickness), worst force difference "
+              << worst_force << " to the peak; end crack energy ratio "
+              << end_ratio("fracture_energy") << ", plastic work ratio "
+              << end_ratio("plastic_work") << std::endl;
+  }
+} // namespace
+
 int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                    out = Testing::open_output();
 
-  std::stringstream prm;
-  prm << Testing::shipped_scene("ductile_notch.prm");
-  prm << Testing::file_text(SOURCE_DIR "/ductile_notch_coarse.prm");
-  prm << R"(
-subsection Mesh
-  subsection Gmsh
-    set File name = )" SOURCE_DIR R"(/meshes/ductile_notch_coarse.msh
+  const Testing::Table graded =
+    pull("ductile_notch_coarse.msh", "", "ductile_notch_run");
+  check_run(out, graded, graded_thickness);
+
+  const Testing::Table adapted = pull("ductile_notch_h0.2.msh",
+                                      R"(subsection Mesh
+  subsection Adaptive refinement
+    set Enabled               = true
+    set Phase-field threshold = 0.2
+    set Hardening threshold   = 0.002
+    set Maximum level         = 1
   end
 end
-subsection Load stepping
-  set End time = 0.68
-end
-)";
-  const Testing::Table t = Testing::run_scene(prm.str(), "ductile_notch_run");
-
-  const double        thickness = 1e-4, ligament = 5e-4, g_c = 2800;
-  const auto         &F     = t.at("F2_y");
-  const std::size_t   n     = F.size();
-  const std::size_t   k_max = std::max_element(F.begin(), F.end()) - F.begin();
-  const double        peak  = F[k_max];
-  const double        W_ext = t.at("external_work")[n - 1];
-  double              worst_balance = 0, min_s_change = 0;
-  std::vector<double> rates, crack_rates;
-  for (std::size_t k = 1; k < n; ++k)
-    {
-      worst_balance     = std::max(worst_balance,
-                               std::abs(t.at("energy_residual")[k]) /
-                                 std::max(t.at("external_work")[k], 1e-300));
-      min_s_change      = std::min(min_s_change, t.at("min_s_change")[k]);
-      const double rate = t.at("newton_rate")[k];
-      if (rate > 0.)
-        {
-          rates.push_back(rate);
-          if (t.at("newton_iterations")[k] >= 4)
-            crack_rates.push_back(rate);
-        }
-    }
-  const auto median = [](std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0. : v[v.size() / 2];
-  };
-  const double crack_ratio =
-    t.at("fracture_energy")[n - 1] / (g_c * ligament * thickness);
-  const double plastic_share =
-    t.at("plastic_work")[k_max] / t.at("external_work")[k_max];
-
-  out << "end reached (20.4 um): "
-      << Testing::yes_no(std::abs(t.at("time")[n - 1] - 0.68) < 1e-12) << "\n"
-      << "yields before it cracks (at the peak alpha > 1 %, W_p > W_ext/3): "
-      << Testing::yes_no(t.at("max_alpha")[k_max] > 0.01 &&
-                         plastic_share > 1. / 3.)
-      << "\n"
-      << "interior force maximum, force at the end below 20 % of it: "
-      << Testing::yes_no(k_max > 0 && k_max + 1 < n && F[n - 1] < 0.2 * peak)
-      << "\n"
-      << "crack energy 0.8-1.6 x g_c x ligament x thickness: "
-      << Testing::yes_no(crack_ratio > 0.8 && crack_ratio < 1.6) << "\n"
-      << "energy balance closes to 5 % of W_ext at every step: "
-      << Testing::yes_no(worst_balance < 0.05) << "\n"
-      << "s never decreases at any DoF (to the Newton tolerance 1e-8): "
-      << Testing::yes_no(min_s_change > -1e-8) << "\n"
-      << "Newton rate defined in most steps, median > 1.7: "
-      << Testing::yes_no(rates.size() > n / 2 && median(rates) > 1.7) << "\n"
-      << "and over the crack's steps (>= 4 iterations), median > 1.7: "
-      << Testing::yes_no(crack_rates.size() >= 3 && median(crack_rates) > 1.7)
-      << "\n";
-  std::cout << "peak " << peak / thickness * 1e-6
-            << " kN/mm at u = " << t.at("u2_y")[k_max] * 1e6 << " um, alpha "
-            << t.at("max_alpha")[k_max] << ", W_p/W_ext " << plastic_share
-            << "; end force / peak " << F[n - 1] / peak << ", crack energy "
-            << crack_ratio << " g_c A, worst balance " << worst_balance
-            << " W_ext (W_ext " << W_ext << " J), min s change " << min_s_change
-            << ", median rate " << median(rates) << " of " << rates.size()
-            << ", in the crack's steps " << median(crack_rates) << " of "
-            << crack_rates.size() << std::endl;
+)",
+                                      "ductile_notch_adaptive_run");
+  check_run(out, adapted, coarse_thickness);
+  compare(out, graded, adapted);
 }
