@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Issue #24: every shipped scene that finishes within an hour, run whole on
-# 2 MPI ranks with the current defaults, and the contact scenes once more
-# with the augmented Lagrangian (the enforcement before the semi-smooth
-# Newton method) for a before/after on the same machine and day.
+# 2 MPI ranks with the current defaults, once more with single-precision
+# MUMPS factors (variant single, to choose that default; not for
+# hertz_sphere, whose solver is GMRES-AMG), and the contact
+# scenes with the augmented Lagrangian (the enforcement before the
+# semi-smooth Newton method). Runs of earlier code are kept under another
+# variant name (e.g. runs/SCENE/2026-12-02) for a before/after.
 # report.py writes results.md: wall time, Newton and linear iterations, time
 # per Newton iteration split into bulk assembly / contact / linear solve /
 # rest, peak memory, and each scene's quantity of interest against its
@@ -18,16 +21,17 @@ require_build
 # scene -> variants; a variant is a name and .prm lines to append
 # (';' separates lines), "default" appends nothing.
 declare -A variants=(
-  [box_compression]="default"
-  [necking_bar]="default"
-  [two_bodies]="default al"
+  [box_compression]="default single"
+  [necking_bar]="default single"
+  [two_bodies]="default al single"
   [hertz_sphere]="default"
-  [ironing]="default"
-  [ductile_notch]="default"
-  [sent_coarse]="default"
+  [ironing]="default single"
+  [ductile_notch]="default single"
+  [sent_coarse]="default single"
 )
 declare -A settings=(
   [al]="subsection Contact pair 1;  set Enforcement = augmented Lagrangian;end"
+  [single]="subsection Linear solver;  set Factorisation precision = single;end"
 )
 order=(box_compression necking_bar two_bodies hertz_sphere ironing ductile_notch sent_coarse)
 
