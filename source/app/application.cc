@@ -20,6 +20,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 
@@ -347,200 +348,273 @@ namespace DuctileContact
 
 
 
-  int
-  run_application(int argc, char **argv, const MPI_Comm comm)
+  namespace
   {
-    const bool  root     = Utilities::MPI::this_mpi_process(comm) == 0;
-    bool        validate = false, print_parameters = false, resume = false;
-    std::string file_name;
-    ParameterHandler::OutputStyle style = ParameterHandler::PRM;
-    for (int i = 1; i < argc; ++i)
-      {
-        const std::string arg = argv[i];
-        if (arg == "--validate")
-          validate = true;
-        else if (arg == "--resume")
-          resume = true;
-        else if (arg.rfind("--print-parameters", 0) == 0)
-          {
-            print_parameters         = true;
-            const std::string format = arg.size() > 18 && arg[18] == '='
-                                         ? arg.substr(19)
-                                         : std::string("prm");
-            if (format == "prm")
-              style = ParameterHandler::PRM;
-            else if (format == "description")
-              style = ParameterHandler::Description;
-            else if (format == "json")
-              style = ParameterHandler::JSON;
-            else
-              {
-                if (root)
-                  std::cerr << "Error: unknown format '" << format
-                            << "' of --print-parameters (prm, description or "
-                               "json)\n"
-                            << usage;
-                return 1;
-              }
-          }
-        else if (arg == "-h" || arg == "--help")
-          {
-            if (root)
-              std::cout << usage;
-            return 0;
-          }
-        else if (!arg.empty() && arg[0] == '-')
-          {
-            if (root)
-              std::cerr << "Error: unknown option '" << arg << "'\n" << usage;
-            return 1;
-          }
-        else if (file_name.empty())
-          file_name = arg;
-        else
-          {
-            if (root)
-              std::cerr << "Error: more than one input file given ('"
-                        << file_name << "', '" << arg << "')\n"
-                        << usage;
-            return 1;
-          }
-      }
-    if (file_name.empty() && !print_parameters)
-      {
-        if (root)
-          std::cerr << "Error: no input file given\n" << usage;
-        return 1;
-      }
+    /// What the command line asks for.
+    struct CommandLine
+    {
+      bool                          validate = false, print_parameters = false;
+      bool                          resume = false;
+      std::string                   file_name;
+      ParameterHandler::OutputStyle style = ParameterHandler::PRM;
+      /// Set when the command line is answered without reading an input
+      /// file (help, a bad option): the exit code.
+      std::optional<int> exit_code;
+    };
 
-    // Parse, check and (for --validate and runs) build the coarse scene:
-    // every input error surfaces here, before any work.
-    RunParameters            parameters;
-    std::vector<std::string> warnings;
-    try
-      {
-        parameters.parse(file_name);
-        if (!print_parameters)
-          {
-            parallel::distributed::Triangulation<dim> coarse(comm);
-            build_and_check_mesh(parameters, coarse, false);
-            check_boundary_expressions(parameters, coarse);
-            check_memory(parameters, coarse);
-            check_output_directory(parameters.output.directory);
-            warnings = crack_resolution_warnings(parameters, coarse);
-          }
-      }
-    catch (const InputError &e)
-      {
-        if (root)
-          std::cerr << "Error in input file '" << file_name << "': " << e.what()
-                    << std::endl;
-        return 1;
-      }
-    catch (const ExceptionBase &e)
-      {
-        // ParameterHandler's messages name the line, entry, value and
-        // pattern; print them without deal.II's stack-trace header.
-        std::ostringstream info;
-        e.print_info(info);
-        std::string message = parser_message(info.str());
-        for (auto pos = message.find("<input string>");
-             pos != std::string::npos;
-             pos = message.find("<input string>"))
-          message.replace(pos, 14, "'" + file_name + "'");
-        if (root)
-          std::cerr << "Error in input file '" << file_name << "': " << message
-                    << std::endl;
-        return 1;
-      }
 
-    if (print_parameters)
-      {
-        if (root)
-          parameters.prm.print_parameters(
-            std::cout, style | ParameterHandler::KeepDeclarationOrder);
-        return 0;
-      }
-    if (validate)
-      {
-        if (root)
-          {
-            for (const std::string &w : warnings)
-              std::cout << w << std::endl;
-            std::cout << file_name << ": valid" << std::endl;
-          }
-        return 0;
-      }
 
-    // A run: results folder with a copy of the input and all parameters.
-    const std::string       &dir = parameters.output.directory;
-    std::string              checkpoint;
-    std::vector<std::string> accepted_changes;
-    if (resume)
+    /// The format of --print-parameters[=FORMAT]; nothing if unknown.
+    std::optional<ParameterHandler::OutputStyle>
+    print_style(const std::string &arg)
+    {
+      const std::string format =
+        arg.size() > 18 && arg[18] == '=' ? arg.substr(19) : "prm";
+      if (format == "prm")
+        return ParameterHandler::PRM;
+      if (format == "description")
+        return ParameterHandler::Description;
+      if (format == "json")
+        return ParameterHandler::JSON;
+      return std::nullopt;
+    }
+
+
+
+    /// The options and the input file; help and errors (with the usage)
+    /// printed on the root rank.
+    CommandLine
+    parse_command_line(int argc, char **argv, const bool root)
+    {
+      CommandLine line;
+      const auto  fail = [&](const std::string &message) {
+        if (root)
+          std::cerr << "Error: " << message << "\n" << usage;
+        line.exit_code = 1;
+        return line;
+      };
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string arg = argv[i];
+          if (arg == "--validate")
+            line.validate = true;
+          else if (arg == "--resume")
+            line.resume = true;
+          else if (arg.rfind("--print-parameters", 0) == 0)
+            {
+              line.print_parameters = true;
+              const auto style      = print_style(arg);
+              if (!style)
+                return fail("unknown format '" + arg.substr(19) +
+                            "' of --print-parameters (prm, description or "
+                            "json)");
+              line.style = *style;
+            }
+          else if (arg == "-h" || arg == "--help")
+            {
+              if (root)
+                std::cout << usage;
+              line.exit_code = 0;
+              return line;
+            }
+          else if (!arg.empty() && arg[0] == '-')
+            return fail("unknown option '" + arg + "'");
+          else if (line.file_name.empty())
+            line.file_name = arg;
+          else
+            return fail("more than one input file given ('" + line.file_name +
+                        "', '" + arg + "')");
+        }
+      if (line.file_name.empty() && !line.print_parameters)
+        return fail("no input file given");
+      return line;
+    }
+
+
+
+    /// Parses and checks the input file and (for --validate and runs)
+    /// builds the coarse scene: every input error surfaces here, before
+    /// any work. False after the message on an error.
+    bool
+    read_input(const CommandLine        &line,
+               const MPI_Comm            comm,
+               const bool                root,
+               RunParameters            &parameters,
+               std::vector<std::string> &warnings)
+    {
+      const std::string &file_name = line.file_name;
       try
         {
-          const Checkpoint checkpoints(dir, parameters.checkpoint.keep, comm);
-          checkpoint = checkpoints.newest();
-          if (checkpoint.empty())
-            throw InputError("Output/Directory",
-                             dir,
-                             "a folder with a complete checkpoint to resume "
-                             "from (there is none in '" +
-                               dir + "/checkpoints')");
-          std::ostringstream current;
-          parameters.prm.print_parameters(
-            current,
-            ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
-          accepted_changes =
-            compare_parameters(checkpoints.read(checkpoint, "parameters.prm"),
-                               current.str());
+          parameters.parse(file_name);
+          if (!line.print_parameters)
+            {
+              parallel::distributed::Triangulation<dim> coarse(comm);
+              build_and_check_mesh(parameters, coarse, false);
+              check_boundary_expressions(parameters, coarse);
+              check_memory(parameters, coarse);
+              check_output_directory(parameters.output.directory);
+              warnings = crack_resolution_warnings(parameters, coarse);
+            }
+          return true;
         }
       catch (const InputError &e)
         {
           if (root)
             std::cerr << "Error in input file '" << file_name
+                      << "': " << e.what() << std::endl;
+        }
+      catch (const ExceptionBase &e)
+        {
+          // ParameterHandler's messages name the line, entry, value and
+          // pattern; print them without deal.II's stack-trace header.
+          std::ostringstream info;
+          e.print_info(info);
+          std::string message = parser_message(info.str());
+          for (auto pos = message.find("<input string>");
+               pos != std::string::npos;
+               pos = message.find("<input string>"))
+            message.replace(pos, 14, "'" + file_name + "'");
+          if (root)
+            std::cerr << "Error in input file '" << file_name
+                      << "': " << message << std::endl;
+        }
+      return false;
+    }
+
+
+
+    /// The newest complete checkpoint in the output directory, and in
+    /// @p accepted_changes the entries changed since it that it allows;
+    /// InputError if there is none or a change invalidates it.
+    std::string
+    checkpoint_to_resume(const RunParameters      &parameters,
+                         const MPI_Comm            comm,
+                         std::vector<std::string> &accepted_changes)
+    {
+      const std::string &dir = parameters.output.directory;
+      const Checkpoint   checkpoints(dir, parameters.checkpoint.keep, comm);
+      const std::string  checkpoint = checkpoints.newest();
+      if (checkpoint.empty())
+        throw InputError("Output/Directory",
+                         dir,
+                         "a folder with a complete checkpoint to resume "
+                         "from (there is none in '" +
+                           dir + "/checkpoints')");
+      std::ostringstream current;
+      parameters.prm.print_parameters(current,
+                                      ParameterHandler::PRM |
+                                        ParameterHandler::KeepDeclarationOrder);
+      accepted_changes =
+        compare_parameters(checkpoints.read(checkpoint, "parameters.prm"),
+                           current.str());
+      return checkpoint;
+    }
+
+
+
+    /// The results folder with a copy of the input and all parameters,
+    /// and the log file in it; false if the folder cannot be made.
+    bool
+    open_results(const CommandLine   &line,
+                 const RunParameters &parameters,
+                 const MPI_Comm       comm,
+                 const bool           root,
+                 TeeStream           &log)
+    {
+      const std::string &dir = parameters.output.directory;
+      if (root)
+        {
+          std::error_code ec;
+          std::filesystem::create_directories(dir, ec);
+          if (ec || !std::filesystem::is_directory(dir))
+            std::cerr << "Error: cannot create the output directory '" << dir
+                      << "' (entry 'Output/Directory'): " << ec.message()
+                      << std::endl;
+        }
+      if (Utilities::MPI::broadcast(comm,
+                                    std::filesystem::is_directory(dir) ? 1 : 0,
+                                    0) == 0)
+        return false;
+      if (root)
+        {
+          log.open_file(dir + "/log.txt", line.resume);
+          std::filesystem::copy_file(
+            line.file_name,
+            dir + "/input.prm",
+            std::filesystem::copy_options::overwrite_existing);
+          std::ofstream all(dir + "/parameters.prm");
+          parameters.prm.print_parameters(
+            all,
+            ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
+        }
+      return true;
+    }
+  } // namespace
+
+
+
+  int
+  run_application(int argc, char **argv, const MPI_Comm comm)
+  {
+    const bool        root = Utilities::MPI::this_mpi_process(comm) == 0;
+    const CommandLine line = parse_command_line(argc, argv, root);
+    if (line.exit_code)
+      return *line.exit_code;
+
+    RunParameters            parameters;
+    std::vector<std::string> warnings;
+    if (!read_input(line, comm, root, parameters, warnings))
+      return 1;
+    if (line.print_parameters)
+      {
+        if (root)
+          parameters.prm.print_parameters(
+            std::cout, line.style | ParameterHandler::KeepDeclarationOrder);
+        return 0;
+      }
+    if (line.validate)
+      {
+        if (root)
+          {
+            for (const std::string &w : warnings)
+              std::cout << w << std::endl;
+            std::cout << line.file_name << ": valid" << std::endl;
+          }
+        return 0;
+      }
+
+    std::string              checkpoint;
+    std::vector<std::string> accepted_changes;
+    if (line.resume)
+      try
+        {
+          checkpoint = checkpoint_to_resume(parameters, comm, accepted_changes);
+        }
+      catch (const InputError &e)
+        {
+          if (root)
+            std::cerr << "Error in input file '" << line.file_name
                       << "' (--resume): " << e.what() << std::endl;
           return 1;
         }
     TeeStream log(std::cout);
-    if (root)
-      {
-        std::error_code ec;
-        std::filesystem::create_directories(dir, ec);
-        if (ec || !std::filesystem::is_directory(dir))
-          std::cerr << "Error: cannot create the output directory '" << dir
-                    << "' (entry 'Output/Directory'): " << ec.message()
-                    << std::endl;
-      }
-    if (Utilities::MPI::broadcast(comm,
-                                  std::filesystem::is_directory(dir) ? 1 : 0,
-                                  0) == 0)
+    if (!open_results(line, parameters, comm, root, log))
       return 1;
     if (root)
       {
-        log.open_file(dir + "/log.txt", resume);
-        std::filesystem::copy_file(
-          file_name,
-          dir + "/input.prm",
-          std::filesystem::copy_options::overwrite_existing);
-        std::ofstream all(dir + "/parameters.prm");
-        parameters.prm.print_parameters(
-          all, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
-      }
-    if (root)
-      log << "ductile-contact: " << file_name << " on "
-          << Utilities::MPI::n_mpi_processes(comm)
-          << " MPI rank(s), results in " << dir << "/" << std::endl;
-    if (root)
-      for (const std::string &w : warnings)
-        log << w << std::endl;
-
-    if (resume && root)
-      {
-        log << "Resuming from " << checkpoint << std::endl;
-        for (const std::string &change : accepted_changes)
-          log << "  changed since the checkpoint, taken: " << change
-              << std::endl;
+        log << "ductile-contact: " << line.file_name << " on "
+            << Utilities::MPI::n_mpi_processes(comm)
+            << " MPI rank(s), results in " << parameters.output.directory << "/"
+            << std::endl;
+        for (const std::string &w : warnings)
+          log << w << std::endl;
+        if (line.resume)
+          {
+            log << "Resuming from " << checkpoint << std::endl;
+            for (const std::string &change : accepted_changes)
+              log << "  changed since the checkpoint, taken: " << change
+                  << std::endl;
+          }
       }
 
     install_stop_handlers();

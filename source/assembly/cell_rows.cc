@@ -34,9 +34,7 @@ namespace DuctileContact
     for (unsigned int d = 0; d < dim; ++d)
       node_grad[d].resize(n_nodes);
     for (unsigned int k = 0; k < dofs.u.size(); ++k)
-      {
-        u_grad[k] = fe_values.shape_grad(dofs.u[k], q);
-      }
+      u_grad[k] = fe_values.shape_grad(dofs.u[k], q);
     for (unsigned int j = 0; j < n_nodes; ++j)
       for (unsigned int d = 0; d < dim; ++d)
         node_grad[d][j] = fe_values.shape_grad(dofs.u_by_component[0][j], q)[d];

@@ -26,6 +26,76 @@ namespace DuctileContact
     constexpr unsigned int node_record = 6 + 1 + 2 * max_parents;
     /// Doubles per gathered face: material id, then its 9 nodes.
     constexpr unsigned int face_record = 1 + 9 * node_record;
+
+
+
+    /// Appends the record of face @p f of @p cell (material id, then per
+    /// node its DoFs, position and parents) to @p local.
+    void
+    append_face_record(const Discretisation &discretisation,
+                       const DoFHandler<dim>::active_cell_iterator &cell,
+                       const unsigned int                           f,
+                       std::vector<types::global_dof_index>        &cell_dofs,
+                       std::vector<double>                         &local)
+    {
+      const FiniteElement<dim> &fe   = cell->get_fe();
+      const auto               &base = fe.base_element(0);
+      if (base.degree != 2 || base.dofs_per_cell != 27)
+        throw InputError("Finite elements/Polynomial degree",
+                         std::to_string(base.degree),
+                         "2 in a scene with contact (the mortar contact works "
+                         "on quad9 faces)");
+      cell_dofs.resize(fe.n_dofs_per_cell());
+      cell->get_dof_indices(cell_dofs);
+
+      // Parameters of the face: the two free cell coordinates in cyclic
+      // order after the face's normal direction.
+      const unsigned int d = f / 2, c1 = (d + 1) % 3, c2 = (d + 2) % 3;
+      std::array<std::array<double, node_record>, 9> node_data{};
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          const auto ci = fe.system_to_component_index(i);
+          if (ci.first != 0 || !fe.has_support_on_face(i, f))
+            continue;
+          const Point<dim>   p = base.unit_support_point(ci.second);
+          const unsigned int a = std::lround(2. * p[c1]);
+          const unsigned int b = std::lround(2. * p[c2]);
+          const Point<dim>   X =
+            discretisation.mapping[0].transform_unit_to_real_cell(cell, p);
+          auto &data = node_data[a + 3 * b];
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              data[c] = static_cast<double>(
+                cell_dofs[fe.component_to_system_index(c, ci.second)]);
+              data[3 + c] = X[c];
+            }
+          const auto *parents =
+            discretisation.hanging_node_constraints.get_constraint_entries(
+              static_cast<types::global_dof_index>(data[0]));
+          if (parents != nullptr)
+            {
+              AssertThrow(parents->size() <= max_parents, ExcInternalError());
+              data[6] = parents->size();
+              for (unsigned int p = 0; p < parents->size(); ++p)
+                {
+                  data[7 + 2 * p] = static_cast<double>((*parents)[p].first);
+                  data[8 + 2 * p] = (*parents)[p].second;
+                }
+            }
+        }
+      // Orientation: x_xi x x_eta must point out of the cell.
+      Quad9 q;
+      for (unsigned int n = 0; n < 9; ++n)
+        q.x[n] = Point<dim>(node_data[n][3], node_data[n][4], node_data[n][5]);
+      const Tensor<1, dim> out = q.x[4] - cell->center();
+      if (q.normal(Point<2>(0.5, 0.5)) * out < 0.)
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int b = a + 1; b < 3; ++b)
+            std::swap(node_data[a + 3 * b], node_data[b + 3 * a]);
+      local.push_back(cell->material_id());
+      for (const auto &data : node_data)
+        local.insert(local.end(), data.begin(), data.end());
+    }
   } // namespace
 
 
@@ -36,83 +106,15 @@ namespace DuctileContact
   {
     boundary_id             = id;
     const auto &dof_handler = discretisation.dof_handler;
-    const auto &mapping     = discretisation.mapping[0];
 
     std::vector<double>                  local;
     std::vector<types::global_dof_index> cell_dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        if (!cell->is_locally_owned())
-          continue;
+      if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
-          {
-            if (!cell->face(f)->at_boundary() ||
-                cell->face(f)->boundary_id() != id)
-              continue;
-            const FiniteElement<dim> &fe   = cell->get_fe();
-            const auto               &base = fe.base_element(0);
-            if (base.degree != 2 || base.dofs_per_cell != 27)
-              throw InputError(
-                "Finite elements/Polynomial degree",
-                std::to_string(base.degree),
-                "2 in a scene with contact (the mortar contact works on "
-                "quad9 faces)");
-            cell_dofs.resize(fe.n_dofs_per_cell());
-            cell->get_dof_indices(cell_dofs);
-
-            // Parameters of the face: the two free cell coordinates in
-            // cyclic order after the face's normal direction.
-            const unsigned int d = f / 2, c1 = (d + 1) % 3, c2 = (d + 2) % 3;
-            std::array<std::array<double, node_record>, 9> node_data{};
-            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-              {
-                const auto ci = fe.system_to_component_index(i);
-                if (ci.first != 0 || !fe.has_support_on_face(i, f))
-                  continue;
-                const Point<dim>   p = base.unit_support_point(ci.second);
-                const unsigned int a = std::lround(2. * p[c1]);
-                const unsigned int b = std::lround(2. * p[c2]);
-                const Point<dim>   X =
-                  mapping.transform_unit_to_real_cell(cell, p);
-                auto &data = node_data[a + 3 * b];
-                for (unsigned int c = 0; c < dim; ++c)
-                  {
-                    data[c] = static_cast<double>(
-                      cell_dofs[fe.component_to_system_index(c, ci.second)]);
-                    data[3 + c] = X[c];
-                  }
-                const auto *parents =
-                  discretisation.hanging_node_constraints
-                    .get_constraint_entries(
-                      static_cast<types::global_dof_index>(data[0]));
-                if (parents != nullptr)
-                  {
-                    AssertThrow(parents->size() <= max_parents,
-                                ExcInternalError());
-                    data[6] = parents->size();
-                    for (unsigned int p = 0; p < parents->size(); ++p)
-                      {
-                        data[7 + 2 * p] =
-                          static_cast<double>((*parents)[p].first);
-                        data[8 + 2 * p] = (*parents)[p].second;
-                      }
-                  }
-              }
-            // Orientation: x_xi x x_eta must point out of the cell.
-            Quad9 q;
-            for (unsigned int n = 0; n < 9; ++n)
-              q.x[n] =
-                Point<dim>(node_data[n][3], node_data[n][4], node_data[n][5]);
-            const Tensor<1, dim> out = q.x[4] - cell->center();
-            if (q.normal(Point<2>(0.5, 0.5)) * out < 0.)
-              for (unsigned int a = 0; a < 3; ++a)
-                for (unsigned int b = a + 1; b < 3; ++b)
-                  std::swap(node_data[a + 3 * b], node_data[b + 3 * a]);
-            local.push_back(cell->material_id());
-            for (const auto &data : node_data)
-              local.insert(local.end(), data.begin(), data.end());
-          }
-      }
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == id)
+            append_face_record(discretisation, cell, f, cell_dofs, local);
 
     const std::vector<std::vector<double>> all =
       Utilities::MPI::all_gather(dof_handler.get_communicator(), local);

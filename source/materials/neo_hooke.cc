@@ -100,7 +100,6 @@ namespace DuctileContact
     if (with_tangent)
       r.dP_dF =
         first_elasticity_tensor(F_inv, spatial_tangent(k, mu, kappa), r.tau);
-    r.symmetric_tangent = true; // d^2 Psi / dF^2
     return r;
   }
 } // namespace DuctileContact

@@ -40,6 +40,16 @@ namespace DuctileContact
       "Empty: no local refinement.",
       Patterns::Anything());
 
+    declare_adaptive_refinement(prm);
+    declare_scenes(prm);
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  MeshParameters::declare_adaptive_refinement(ParameterHandler &prm)
+  {
     prm.enter_subsection("Adaptive refinement");
     prm.add_parameter(
       "Enabled",
@@ -81,7 +91,13 @@ namespace DuctileContact
                       "again before it is accepted on the mesh it has.",
                       Patterns::Integer(1, 20));
     prm.leave_subsection();
+  }
 
+
+
+  void
+  MeshParameters::declare_scenes(ParameterHandler &prm)
+  {
     prm.enter_subsection("Box");
     prm.add_parameter("Lower corner",
                       box.lower_corner,
@@ -176,8 +192,6 @@ namespace DuctileContact
                       "Gmsh .msh file (format 2.2 or 4.1, hexahedra), "
                       "relative to the directory the program is started in.",
                       Patterns::Anything());
-    prm.leave_subsection();
-
     prm.leave_subsection();
   }
 

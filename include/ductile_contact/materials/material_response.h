@@ -45,10 +45,6 @@ namespace DuctileContact
     dealii::Tensor<2, dim> P;
     /// dP/dF, [a][B][c][D] = dP_aB / dF_cD; dP/dalpha, dP/ds.
     dealii::Tensor<4, dim> dP_dF;
-    /// Whether dP/dF has the major symmetry (the second derivative of an
-    /// energy, as for neo_hooke()): then the u-u block of a cell matrix is
-    /// symmetric and half of it is computed (cell_rows.h).
-    bool                   symmetric_tangent = false;
     dealii::Tensor<2, dim> dP_dalpha, dP_ds;
     /// Local part r of the hardening equation (50) per unit volume and its
     /// derivatives (plastic bodies only).

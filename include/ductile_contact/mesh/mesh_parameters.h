@@ -127,5 +127,14 @@ namespace DuctileContact
     /// Checks values and parses the refinement boxes; throws InputError.
     void
     check();
+
+  private:
+    /// The entries of subsection Adaptive refinement (in subsection Mesh).
+    void
+    declare_adaptive_refinement(dealii::ParameterHandler &prm);
+
+    /// The subsections of the scenes (Box, Two bodies, Round bar, Gmsh).
+    void
+    declare_scenes(dealii::ParameterHandler &prm);
   };
 } // namespace DuctileContact
