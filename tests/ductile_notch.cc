@@ -44,7 +44,7 @@
 //    coarse mesh is up to 2 % stiffer);
 //  - at the end its crack energy and plastic work are those of the graded
 //    mesh to 2 % (0.5 % and 0.2 % here).
-// One MPI rank only (~1 min; MUMPS is slower on 2 ranks for this size).
+// One MPI rank only (~2 min; MUMPS is slower on 2 ranks for this size).
 // The terms of the coupling are local to quadrature points; that the
 // plastic and the fracture assembly (ghosted alpha and s, C0IP faces,
 // quadrature-point history) give identical results on 1 and 2 ranks is
