@@ -123,10 +123,9 @@ namespace DuctileContact
                      const bool                  tangent,
                      LocalRows                  &rows)
   {
-    const unsigned int n_u = dofs.u.size(), n_a = dofs.alpha.size(),
-                       n_s = dofs.s.size();
-    const auto &a_value    = shapes.alpha_value;
-    const auto &a_grad     = shapes.alpha_grad;
+    const unsigned int n_u = dofs.u.size(), n_a = dofs.alpha.size();
+    const auto        &a_value = shapes.alpha_value;
+    const auto        &a_grad  = shapes.alpha_grad;
     for (unsigned int k = 0; k < n_a; ++k)
       {
         const unsigned int i = dofs.alpha[k];
@@ -154,17 +153,12 @@ namespace DuctileContact
         u_alpha_left[l]      = (m.dP_dalpha[c] * shapes.u_grad[l]) * JxW;
       }
     std::copy(a_value.begin(), a_value.end(), blocks.u_alpha.right(q, 0));
+    for (unsigned int k = 0; k < n_a; ++k)
+      alpha_u_left[k] = a_value[k] * JxW;
     // alpha-alpha: dr/dalpha N_k N_l + y_0 l_p^2 Grad N_k . Grad N_l;
     // alpha-s: dr/ds N_k N_l.
-    double *aa_left = blocks.alpha_alpha.left(q, 0);
-    double *as_left = blocks.alpha_s.left(q, 0);
-    for (unsigned int k = 0; k < n_a; ++k)
-      {
-        alpha_u_left[k] = a_value[k] * JxW;
-        aa_left[k]      = m.dr_dalpha * a_value[k] * JxW;
-        as_left[k]      = m.dr_ds * a_value[k] * JxW;
-      }
-    std::copy(a_value.begin(), a_value.end(), blocks.alpha_alpha.right(q, 0));
+    blocks.alpha_alpha.set_scaled(q, 0, m.dr_dalpha * JxW, a_value, a_value);
+    blocks.alpha_s.set_scaled(q, 0, m.dr_ds * JxW, a_value, shapes.s_value);
     for (unsigned int D = 0; D < dim; ++D)
       {
         double *left  = blocks.alpha_alpha.left(q, 1 + D);
@@ -175,10 +169,6 @@ namespace DuctileContact
             right[k] = a_grad[k][D];
           }
       }
-    if (n_s > 0)
-      std::copy(shapes.s_value.begin(),
-                shapes.s_value.end(),
-                blocks.alpha_s.right(q, 0));
   }
 
 
@@ -196,11 +186,10 @@ namespace DuctileContact
                        const bool              tangent,
                        LocalRows              &rows)
   {
-    const unsigned int n_u = dofs.u.size(), n_a = dofs.alpha.size(),
-                       n_s = dofs.s.size();
-    const double eta_f     = body.crack.viscosity;
-    const double g1 = driver.g1, psi_H = driver.psi_H;
-    const double scale =
+    const unsigned int n_u = dofs.u.size(), n_s = dofs.s.size();
+    const double       eta_f = body.crack.viscosity;
+    const double       g1 = driver.g1, psi_H = driver.psi_H;
+    const double       scale =
       body.crack.critical_energy_release_rate / (2. * body.crack.length_scale);
     const auto &s_value = shapes.s_value;
     for (unsigned int k = 0; k < n_s; ++k)
@@ -220,10 +209,7 @@ namespace DuctileContact
     const DrivingEnergy &psi = driver.psi;
     const double         ds_coefficient =
       eta_f / dt + driver.g2 * psi_H + (driver.loading ? g1 * psi.d_ds : 0.);
-    double *ss_left = blocks.s_s.left(q, 0);
-    for (unsigned int k = 0; k < n_s; ++k)
-      ss_left[k] = ds_coefficient * s_value[k] * JxW;
-    std::copy(s_value.begin(), s_value.end(), blocks.s_s.right(q, 0));
+    blocks.s_s.set_scaled(q, 0, ds_coefficient * JxW, s_value, s_value);
     // u-s: dP/ds : Grad N_k N_l.
     double *us_left = blocks.u_s.left(q, 0);
     for (unsigned int k = 0; k < n_u; ++k)
@@ -238,15 +224,8 @@ namespace DuctileContact
       su_left[k] = g1 * s_value[k] * JxW;
     for (unsigned int l = 0; l < n_u; ++l)
       su_right[l] = psi.d_dF[dofs.u_component[l]] * shapes.u_grad[l];
-    if (n_a > 0)
-      {
-        double *sa_left = blocks.s_alpha.left(q, 0);
-        for (unsigned int k = 0; k < n_s; ++k)
-          sa_left[k] = g1 * psi.d_dalpha * s_value[k] * JxW;
-        std::copy(shapes.alpha_value.begin(),
-                  shapes.alpha_value.end(),
-                  blocks.s_alpha.right(q, 0));
-      }
+    blocks.s_alpha.set_scaled(
+      q, 0, g1 * psi.d_dalpha * JxW, s_value, shapes.alpha_value);
   }
 
 

@@ -684,13 +684,15 @@ namespace DuctileContact
           copy.faces.emplace_back();
         LocalRows &face = copy.faces[copy.n_faces++];
         face.reinit(m);
-        face.indices             = cached.indices;
-        face.matrix              = cached.matrix;
+        face.indices = cached.indices;
+        // The matrix goes to the tangent only; residual passes need f_int.
+        if (pass.targets && pass.targets->tangent)
+          face.matrix = cached.matrix;
         Vector<double> &s_values = scratch.face_s_values;
         s_values.reinit(m);
         for (unsigned int k = 0; k < m; ++k)
           s_values(k) = (*pass.u)(face.indices[k]);
-        face.matrix.vmult(face.f_int, s_values);
+        cached.matrix.vmult(face.f_int, s_values);
         copy.sums.fracture_energy += 0.5 * (s_values * face.f_int);
         face.rhs = face.f_int;
         face.rhs *= -1.;

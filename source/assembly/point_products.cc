@@ -1,5 +1,7 @@
 #include <ductile_contact/assembly/point_products.h>
 
+#include <algorithm>
+
 namespace DuctileContact
 {
   using namespace dealii;
@@ -15,6 +17,23 @@ namespace DuctileContact
     L.reinit(n_q * rank, n_rows);
     R.reinit(n_q * rank, n_cols);
     used = false;
+  }
+
+
+
+  void
+  PointProducts::set_scaled(const unsigned int         q,
+                            const unsigned int         r,
+                            const double               scale,
+                            const std::vector<double> &left_values,
+                            const std::vector<double> &right_values)
+  {
+    if (left_values.empty() || right_values.empty())
+      return;
+    double *l = left(q, r);
+    for (unsigned int i = 0; i < left_values.size(); ++i)
+      l[i] = scale * left_values[i];
+    std::copy(right_values.begin(), right_values.end(), right(q, r));
   }
 
 

@@ -46,6 +46,16 @@ namespace DuctileContact
       return &R(q * rank + r, 0);
     }
 
+    /// The pair (@p scale @p left_values, @p right_values) as L_{q r} and
+    /// R_{q r}: a term scale N_i M_j at point @p q. Nothing when either
+    /// side has no DoFs (a field the cell does not carry).
+    void
+    set_scaled(const unsigned int         q,
+               const unsigned int         r,
+               const double               scale,
+               const std::vector<double> &left_values,
+               const std::vector<double> &right_values);
+
     /// Adds K to @p matrix in the rows @p row_dofs and the columns
     /// @p col_dofs (cell-local indices); nothing if no point wrote.
     void

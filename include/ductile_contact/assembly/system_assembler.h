@@ -208,7 +208,7 @@ namespace DuctileContact
     mutable std::vector<dealii::FullMatrix<double>> crack_matrices;
 
     /// The s-s block of the C0IP face matrix of one interior face (the
-    /// jump and average terms of the crack functional, eq. (C0IP) of
+    /// jump and average terms of the crack functional, "C0IP form" in
     /// doc/model.md) and the global s DoFs it couples.
     struct FaceMatrix
     {
