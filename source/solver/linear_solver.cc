@@ -87,6 +87,8 @@ namespace DuctileContact
     reuse_iterations_left = 0;
     reuses_to_skip        = 0;
     skipped_reuses        = 0;
+    failed_reuses         = 0;
+    failed_reuse_solves   = 0;
   }
 
 
@@ -181,7 +183,9 @@ namespace DuctileContact
         << " precision): " << s.analyses << " analyses " << s.analysis_time
         << " s, " << s.factorisations << " factorisations " << s.factor_time
         << " s, " << s.solves << " solves " << s.solve_time << " s; "
-        << s.factor_entries << " entries in the last factors";
+        << s.factor_entries << " entries in the last factors; " << failed_reuses
+        << " GMRES runs on old factors missed the tolerance ("
+        << failed_reuse_solves << " solves)";
     if (fallback)
       out << "; " << fallback->statistics().factorisations
           << " double-precision factorisations where the single-precision "
@@ -224,8 +228,15 @@ namespace DuctileContact
           {
             const bool fresh =
               reuse_iterations_left == parameters.reuse_iterations;
+            const unsigned int solves_before = mumps->statistics().solves;
             const unsigned int n =
               solve_with_old_factors(A, x, b, reuse_iterations_left);
+            if (n == 0)
+              {
+                ++failed_reuses;
+                failed_reuse_solves +=
+                  mumps->statistics().solves - solves_before;
+              }
             if (n > 0)
               {
                 reuse_iterations_left -= std::min(n, reuse_iterations_left);

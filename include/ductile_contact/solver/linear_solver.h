@@ -167,5 +167,9 @@ namespace DuctileContact
     /// Solves to factorise at once after old factors failed (doubling with
     /// each failure in a row), and those done so far.
     unsigned int reuses_to_skip = 0, skipped_reuses = 0;
+
+    /// GMRES runs on old factors that missed the tolerance within their
+    /// budget, and the triangular solves they spent.
+    unsigned int failed_reuses = 0, failed_reuse_solves = 0;
   };
 } // namespace DuctileContact
