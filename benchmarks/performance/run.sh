@@ -66,3 +66,4 @@ for job in "${jobs[@]}"; do
     echo "   stopped early, see $out/screen.txt"
 done
 python3 "$here/report.py"
+/usr/bin/python3 "$here/plot.py" || echo "   no plot (scripts/install-deps.sh --plots)"
