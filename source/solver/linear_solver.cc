@@ -89,6 +89,7 @@ namespace DuctileContact
     skipped_reuses        = 0;
     failed_reuses         = 0;
     failed_reuse_solves   = 0;
+    last_reuse_iterations = 0;
   }
 
 
@@ -221,9 +222,13 @@ namespace DuctileContact
         // Old factors serve until GMRES has made `Factorisation reuse`
         // iterations with them in all, or fails within those left. When
         // the factors of the previous matrix fail, the next 1, 2, 4, ...
-        // solves factorise at once. Counts, not times: the same run takes
-        // the same path.
-        if (reuse_iterations_left > 0 && skipped_reuses >= reuses_to_skip &&
+        // solves factorise at once. Old factors are not tried when fewer
+        // iterations are left than the last solve with them needed (most
+        // such tries ran out of budget). Counts, not times: the same run
+        // takes the same path.
+        if (reuse_iterations_left > 0 &&
+            reuse_iterations_left >= last_reuse_iterations &&
+            skipped_reuses >= reuses_to_skip &&
             mumps->has_factors_for(A.trilinos_matrix()))
           {
             const bool fresh =
@@ -240,7 +245,8 @@ namespace DuctileContact
             if (n > 0)
               {
                 reuse_iterations_left -= std::min(n, reuse_iterations_left);
-                reuses_to_skip = 0;
+                reuses_to_skip        = 0;
+                last_reuse_iterations = n;
                 return n;
               }
             // The matrix changes too fast for reuse now: back off. Older

@@ -218,9 +218,11 @@ namespace DuctileContact
       "the factors of an earlier matrix of the same pattern, to Relative "
       "tolerance; the matrix is factorised again when that fails within "
       "the iterations left, or once the factors have served this many "
-      "GMRES iterations in all. When the factors of the previous matrix fail, "
-      "the next 1, 2, 4, ... solves factorise directly. 0: factorise on every "
-      "solve. The answer is the same "
+      "GMRES iterations in all; it is factorised at once when fewer "
+      "iterations are left than the last solve on these factors needed. When "
+      "the factors of the previous matrix fail, the next 1, 2, 4, ... solves "
+      "factorise directly. 0: factorise on every solve. The answer is the "
+      "same "
       "(to Relative tolerance in each linear solve); 2-5x faster linear "
       "solves measured (benchmarks/linear_solver).",
       Patterns::Integer(0, 100));

@@ -168,6 +168,9 @@ namespace DuctileContact
     /// each failure in a row), and those done so far.
     unsigned int reuses_to_skip = 0, skipped_reuses = 0;
 
+    /// GMRES iterations of the last solve on old factors that converged.
+    unsigned int last_reuse_iterations = 0;
+
     /// GMRES runs on old factors that missed the tolerance within their
     /// budget, and the triangular solves they spent.
     unsigned int failed_reuses = 0, failed_reuse_solves = 0;
