@@ -66,6 +66,19 @@ try:
 except ImportError:
     print("matplotlib missing (scripts/install-deps.sh --plots): no plot")
     sys.exit(0)
+
+
+def finish(fig, ax, ylabel, title, file_name):
+    """Labels, grid and legend of a plot against the unknowns; saves it."""
+    ax.set_xlabel("unknowns")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(True, which="both", lw=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(here, file_name), dpi=120)
+
+
 now = [r for r in rows if r["series"] == "current"] or rows
 fig, ax = plt.subplots(figsize=(7, 5))
 for (solver, np_), marker in zip(
@@ -81,13 +94,8 @@ n1 = max(r["dofs"] for r in now)
 ref = [r for r in now if r["solver"] == "cg-amg" and r["np"] == 1 and r["dofs"] == n0]
 if ref:
     ax.loglog([n0, n1], [ref[0]["solve"], ref[0]["solve"] * n1 / n0], "k--", lw=0.8, label="O(N)")
-ax.set_xlabel("unknowns")
-ax.set_ylabel("wall time per Newton iteration [s]")
-ax.set_title("Newton iteration cost, Q2 finite-strain column")
-ax.grid(True, which="both", lw=0.3)
-ax.legend(fontsize=7)
-fig.tight_layout()
-fig.savefig(os.path.join(here, "scaling.png"), dpi=120)
+finish(fig, ax, "wall time per Newton iteration [s]",
+       "Newton iteration cost, Q2 finite-strain column", "scaling.png")
 
 # µs·core per unknown per Newton iteration (assembly + linear solve), the
 # runs of 2026-11-21 dashed, the current ones solid.
@@ -102,11 +110,7 @@ for (solver, np_), colour in colours.items():
             ax.semilogx([r["dofs"] for r in sel], [r["per_dof"] for r in sel],
                         style + "o", color=colour,
                         label=f"{solver}, {np_} rank(s), {series}")
-ax.set_xlabel("unknowns")
-ax.set_ylabel("µs·core per unknown per Newton iteration")
 ax.set_yscale("log")
-ax.set_title("Cost per unknown, Q2 finite-strain column (assembly + solve)")
-ax.grid(True, which="both", lw=0.3)
-ax.legend(fontsize=7)
-fig.tight_layout()
-fig.savefig(os.path.join(here, "per_unknown.png"), dpi=120)
+finish(fig, ax, "µs·core per unknown per Newton iteration",
+       "Cost per unknown, Q2 finite-strain column (assembly + solve)",
+       "per_unknown.png")
