@@ -7,6 +7,38 @@ namespace DuctileContact
 {
   using namespace dealii;
 
+  namespace
+  {
+    /**
+     * The pressure of the Coulomb bound, lambda - w c_N g / A with w =
+     * q^2 / (q^2 + (eps lambda)^2), q = c_N g / A. A node that has just
+     * turned active (lambda <= 0, |q| >> eps lambda) sees the augmented
+     * pressure lambda_aug (w ~ 1), so friction acts from its first
+     * iteration; a settled node (g at solver accuracy, |q| << eps lambda)
+     * sees lambda, because its gap enters only through the cube of
+     * q / (eps lambda): c_N amplifies a gap at the linear solver's accuracy
+     * to ~1e-3 lambda, which would otherwise move the bound of a node on
+     * the edge of the Coulomb cone across the traction, and decide stick
+     * or slip by that error (benchmarks/rank_invariance/README.md). Both
+     * are lambda at a solution (g = 0 on the active set), and the
+     * expression is smooth wherever (q, lambda) != 0.
+     */
+    template <typename Number>
+    Number
+    friction_pressure(const Number                 &lambda,
+                      const Number                 &gap,
+                      const Number                 &area,
+                      const NodalContactParameters &p)
+    {
+      constexpr double eps = 1e-2;
+      const Number     q   = p.penalty * gap / area;
+      if (q.val() == 0.)
+        return lambda;
+      const Number q2 = q * q;
+      return lambda - q * q2 / (q2 + eps * eps * lambda * lambda);
+    }
+  } // namespace
+
   NodalComplementarity
   nodal_complementarity(const NodalAggregates        &a,
                         const Tensor<1, dim>         &traction,
@@ -54,7 +86,7 @@ namespace DuctileContact
       {
         result.pressure = std::max(0., lambda.val());
         V        C_T    = t;
-        const AD bound  = p.friction * lambda_aug;
+        const AD bound  = p.friction * friction_pressure(lambda, gap, A, p);
         if (p.friction > 0. && bound.val() > 0.)
           {
             V tau;

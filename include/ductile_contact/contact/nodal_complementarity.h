@@ -41,14 +41,22 @@ namespace DuctileContact
    * & Wohlmuth 2008 and Gitterle et al. 2010), in force units. With the
    * nodal traction f_j (the condensed dual multiplier), lambda = n . f,
    * t = f - lambda n, the gap g = n . G / A, the slip s = (I - n n) H / A
-   * and the augmented pressure lambda_aug = lambda - c_N g:
+   * and the augmented pressure lambda_aug = lambda - c_N g,
    *
    *   inactive (lambda_aug <= 0):   C = A f                  (f = 0)
    *   active, normal part:          C . n = c_N A g          (g = 0)
    *   active, mu = 0:               C_T = A t                (t = 0)
-   *   stick, |t + c_T s| <= mu lambda_aug:  C_T = -c_T A s   (s = 0)
-   *   slip:  C_T = A (t - mu lambda_aug (t + c_T s) / |t + c_T s|)
+   *   stick, |t + c_T s| <= mu lambda_F:  C_T = -c_T A s     (s = 0)
+   *   slip:  C_T = A (t - mu lambda_F (t + c_T s) / |t + c_T s|)
    *          (|t| = mu lambda, t along the slip)
+   *
+   * with the Coulomb bound's pressure lambda_F = lambda - w c_N g, w =
+   * (c_N g)^2 / ((c_N g)^2 + (0.01 lambda)^2): lambda_aug for a node that
+   * has just turned active (so that friction acts from its first
+   * iteration), lambda once its gap has closed to the solver's accuracy
+   * (c_N would amplify that gap into the bound and let its round-off decide
+   * stick or slip at the edge of the cone). lambda_F = lambda_aug = lambda
+   * at a solution.
    *
    * C is continuous across the branches, so its norm is a merit function
    * for the line search. c_N and c_T (Pa/m) are the pair's eps_N and eps_T;
