@@ -353,11 +353,12 @@ namespace DuctileContact
           pair.semi_smooth
             ? slave_row_columns(pair)
             : std::vector<std::vector<types::global_dof_index>>();
+        // Every rank declares the couplings of every slave node: it may
+        // integrate any face pair (linearise_operators()).
         for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
           {
-            if (!discretisation.locally_owned_dofs.is_element(
-                  pair.slave.nodes[j].dofs[0]))
-              continue;
+            const bool owned = discretisation.locally_owned_dofs.is_element(
+              pair.slave.nodes[j].dofs[0]);
             coupled_nodes(pair, j, s, m);
             indices.clear();
             for (const unsigned int k : s)
@@ -373,7 +374,7 @@ namespace DuctileContact
                            master_rows.begin(),
                            master_rows.end());
             all_constraints.add_entries_local_to_global(indices, sp, false);
-            if (pair.semi_smooth && !m.empty())
+            if (owned && pair.semi_smooth && !m.empty())
               all_constraints.add_entries_local_to_global(master_rows,
                                                           columns[j],
                                                           sp,

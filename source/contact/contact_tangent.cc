@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
@@ -31,6 +32,117 @@ namespace DuctileContact
     std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
     const
   {
+    const MPI_Comm     comm    = discretisation.dof_handler.get_communicator();
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int ns      = pair.slave.nodes.size();
+    if (n_ranks == 1)
+      {
+        integrate_face_pairs(pair,
+                             needed,
+                             forces,
+                             slave_rows,
+                             {0, pair.overlaps.size()},
+                             constraints,
+                             targets,
+                             gradients);
+        return;
+      }
+
+    // The nodes every rank needs and the forces on them (each force is
+    // summed from the ranks that own its node or, at a hanging node, its
+    // parents).
+    std::vector<unsigned int> mine;
+    std::vector<double>       force_sums(dim * ns, 0.);
+    for (unsigned int j = 0; j < ns; ++j)
+      if (needed[j])
+        {
+          mine.push_back(j);
+          for (unsigned int c = 0; c < dim; ++c)
+            force_sums[dim * j + c] = forces[j][c];
+        }
+    const auto needs = Utilities::MPI::all_gather(comm, mine);
+    Utilities::MPI::sum(force_sums, comm, force_sums);
+    std::vector<bool>           any(ns, false);
+    std::vector<Tensor<1, dim>> all_forces(ns);
+    for (const auto &list : needs)
+      for (const unsigned int j : list)
+        any[j] = true;
+    for (unsigned int j = 0; j < ns; ++j)
+      for (unsigned int c = 0; c < dim; ++c)
+        all_forces[j][c] = force_sums[dim * j + c];
+
+    // Every rank integrates an equal, contiguous share of the face pairs
+    // that touch a needed node (contiguous: the pairs of one slave face
+    // share its MortarFace), whichever rank owns their nodes.
+    std::vector<std::size_t> touching;
+    for (std::size_t i = 0; i < pair.overlaps.size(); ++i)
+      {
+        const auto &s_nodes = pair.slave.faces[pair.overlaps[i].first].nodes;
+        if (std::any_of(s_nodes.begin(),
+                        s_nodes.end(),
+                        [&](const unsigned int j) { return any[j]; }))
+          touching.push_back(i);
+      }
+    const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
+    const std::size_t  begin = touching.size() * rank / n_ranks;
+    const std::size_t  end   = touching.size() * (rank + 1) / n_ranks;
+    integrate_face_pairs(pair,
+                         any,
+                         all_forces,
+                         slave_rows,
+                         {begin < end ? touching[begin] : 0,
+                          begin < end ? touching[end - 1] + 1 : 0},
+                         constraints,
+                         targets,
+                         gradients);
+
+    // The partial gradients go to the ranks that need them.
+    std::map<unsigned int, std::vector<double>> outgoing;
+    for (unsigned int q = 0; q < n_ranks; ++q)
+      if (q != rank)
+        for (const unsigned int j : needs[q])
+          if (!gradients[j].empty())
+            {
+              auto &data = outgoing[q];
+              data.push_back(j);
+              data.push_back(gradients[j].size());
+              for (const auto &[key, e] : gradients[j])
+                {
+                  data.push_back(key);
+                  data.insert(data.end(), e.begin(), e.end());
+                }
+            }
+    const auto incoming = Utilities::MPI::some_to_some(comm, outgoing);
+    for (unsigned int j = 0; j < ns; ++j)
+      if (!needed[j])
+        gradients[j].clear();
+    for (const auto &[q, data] : incoming)
+      for (std::size_t i = 0; i < data.size();)
+        {
+          auto             &g = gradients[static_cast<unsigned int>(data[i])];
+          const std::size_t n = static_cast<std::size_t>(data[i + 1]);
+          i += 2;
+          for (std::size_t e = 0; e < n; ++e, i += 11)
+            {
+              auto &target = g[static_cast<unsigned int>(data[i])];
+              for (unsigned int a = 0; a < 10; ++a)
+                target[a] += data[i + 1 + a];
+            }
+        }
+  }
+
+  void
+  ContactProblem::integrate_face_pairs(
+    const Pair                                                  &pair,
+    const std::vector<bool>                                     &needed,
+    const std::vector<Tensor<1, dim>>                           &forces,
+    const bool                                                   slave_rows,
+    const std::pair<std::size_t, std::size_t>                   &range,
+    const AffineConstraints<double>                             &constraints,
+    const AssemblyTargets                                       &targets,
+    std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
+    const
+  {
     const ContactSurface  &slave = pair.slave, &master = pair.master;
     const unsigned int     ns            = slave.nodes.size();
     constexpr unsigned int n_coordinates = face_pair_coordinates;
@@ -41,8 +153,9 @@ namespace DuctileContact
     Vector<double>              rhs(n_coordinates), f_int(n_coordinates);
     std::vector<types::global_dof_index>    indices(n_coordinates);
     std::array<unsigned int, n_coordinates> keys;
-    for (const auto &[f, c] : pair.overlaps)
+    for (std::size_t i = range.first; i < range.second; ++i)
       {
+        const auto [f, c]   = pair.overlaps[i];
         const auto &s_nodes = slave.faces[f].nodes;
         const auto &m_nodes = master.faces[c].nodes;
         if (std::none_of(s_nodes.begin(),
@@ -111,8 +224,6 @@ namespace DuctileContact
       }
   }
 
-
-
   void
   ContactProblem::add_direct_gradients(
     const Pair                                     &pair,
@@ -163,8 +274,6 @@ namespace DuctileContact
           }
       }
   }
-
-
 
   void
   ContactProblem::assemble_penalty(Pair                            &pair,

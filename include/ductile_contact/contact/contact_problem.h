@@ -106,9 +106,11 @@ namespace DuctileContact
    * assembles the rows of the slave nodes whose DoFs it owns, which touch
    * master rows owned by other ranks: those are added through the
    * distributed matrix and vectors (compress(add)). The derivatives of D
-   * and M (the expensive part of a tangent assembly) are computed only for
-   * the face pairs that touch an active slave node the rank owns. Results
-   * are the same on any number of ranks up to round-off.
+   * and M (the expensive part of a tangent assembly) are needed for the
+   * face pairs that touch an active slave node; all ranks integrate equal
+   * shares of them and send the derivatives to the nodes' owners
+   * (linearise_operators()). Results are the same on any number of ranks
+   * up to round-off.
    */
   class ContactProblem
   {
@@ -404,17 +406,36 @@ namespace DuctileContact
             const dealii::AffineConstraints<double>     &constraints,
             dealii::TrilinosWrappers::BlockSparseMatrix &tangent);
 
-    /// d(aggregates of node j)/dx from the derivatives of D and M
-    /// (overlapping face pairs with a node in @p needed) and adds the
-    /// dD f_j (if @p slave_rows), dM f_j part of the tangent to @p
-    /// targets. Keys of @p gradients: 3 node + c, master nodes after the
-    /// slave nodes.
+    /// d(aggregates of node j)/dx, for the nodes j in @p needed, from the
+    /// derivatives of D and M (overlapping face pairs with a node in @p
+    /// needed) and adds the dD f_j (if @p slave_rows), dM f_j part of the
+    /// tangent to @p targets (@p forces: f_j of the needed nodes). Keys of
+    /// @p gradients: 3 node + c, master nodes after the slave nodes.
+    /// On several ranks the face pairs that any rank needs are split into
+    /// equal shares, integrated where they fall, and the partial gradients
+    /// sent to the ranks that need them: the slave nodes of a surface are
+    /// mostly owned by one rank, which would otherwise do all of the work.
     void
     linearise_operators(
       const Pair                                                  &pair,
       const std::vector<bool>                                     &needed,
       const std::vector<dealii::Tensor<1, dim>>                   &forces,
       const bool                                                   slave_rows,
+      const dealii::AffineConstraints<double>                     &constraints,
+      const AssemblyTargets                                       &targets,
+      std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
+      const;
+
+    /// The work of linearise_operators() on this rank: the face pairs
+    /// pair.overlaps[@p range.first, @p range.second) that touch a node of
+    /// @p needed, whose forces @p forces are complete.
+    void
+    integrate_face_pairs(
+      const Pair                                                  &pair,
+      const std::vector<bool>                                     &needed,
+      const std::vector<dealii::Tensor<1, dim>>                   &forces,
+      const bool                                                   slave_rows,
+      const std::pair<std::size_t, std::size_t>                   &range,
       const dealii::AffineConstraints<double>                     &constraints,
       const AssemblyTargets                                       &targets,
       std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
