@@ -2,9 +2,11 @@
 # Issue #24: every shipped scene that finishes within an hour, run whole on
 # 2 MPI ranks with the current defaults, once more with single-precision
 # MUMPS factors (variant single, to choose that default; not for
-# hertz_sphere, whose solver is GMRES-AMG), and the contact
+# hertz_sphere, whose default it is), and the contact
 # scenes with the augmented Lagrangian (the enforcement before the
-# semi-smooth Newton method). Runs of earlier code are kept under another
+# semi-smooth Newton method), and hertz_sphere with double-precision
+# factors (variant direct) and with GMRES-AMG (variant amg, its default
+# before session 35). Runs of earlier code are kept under another
 # variant name (e.g. runs/SCENE/2026-12-02) for a before/after.
 # report.py writes results.md: wall time, Newton and linear iterations, time
 # per Newton iteration split into bulk assembly / contact / linear solve /
@@ -24,7 +26,7 @@ declare -A variants=(
   [box_compression]="default single"
   [necking_bar]="default single"
   [two_bodies]="default al single"
-  [hertz_sphere]="default"
+  [hertz_sphere]="default direct amg"
   [ironing]="default single"
   [ductile_notch]="default single"
   [sent_coarse]="default single"
@@ -32,6 +34,8 @@ declare -A variants=(
 declare -A settings=(
   [al]="subsection Contact pair 1;  set Enforcement = augmented Lagrangian;end"
   [single]="subsection Linear solver;  set Factorisation precision = single;end"
+  [direct]="subsection Linear solver;  set Type = direct;  set Factorisation precision = double;end"
+  [amg]="subsection Linear solver;  set Type = gmres-amg;end"
 )
 order=(box_compression necking_bar two_bodies hertz_sphere ironing ductile_notch sent_coarse)
 
