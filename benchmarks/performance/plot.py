@@ -20,8 +20,8 @@ before = {
     "hertz_sphere": ("contact/hertz_sphere/runs/h4-w0.2/screen.txt", 2),
     "ironing": ("contact/ironing/runs/screen.txt", 1),
 }
-scenes = ["two_bodies", "sent_coarse", "ductile_notch", "hertz_sphere",
-          "ironing", "necking_bar", "box_compression"]
+scenes = ["two_bodies", "block_on_plate", "sent_coarse", "ductile_notch",
+          "hertz_sphere", "ironing", "necking_bar", "box_compression"]
 series = [("when the issue was filed (2026-11-22 .. 12-01)", None),
           ("defaults of 2026-12-02", "2026-12-02"),
           ("current defaults", "default")]

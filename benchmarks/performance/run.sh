@@ -26,6 +26,7 @@ declare -A variants=(
   [box_compression]="default single"
   [necking_bar]="default single"
   [two_bodies]="default al single"
+  [block_on_plate]="default"
   [hertz_sphere]="default direct amg"
   [ironing]="default single"
   [ductile_notch]="default single"
@@ -37,7 +38,7 @@ declare -A settings=(
   [direct]="subsection Linear solver;  set Type = direct;  set Factorisation precision = double;end"
   [amg]="subsection Linear solver;  set Type = gmres-amg;end"
 )
-order=(box_compression necking_bar two_bodies hertz_sphere ironing ductile_notch sent_coarse)
+order=(box_compression necking_bar two_bodies block_on_plate hertz_sphere ironing ductile_notch sent_coarse)
 
 jobs=("$@")
 if ((${#jobs[@]} == 0)); then
