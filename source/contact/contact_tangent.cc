@@ -21,21 +21,139 @@ namespace DuctileContact
 {
   using namespace dealii;
 
+  namespace
+  {
+    using Gradients =
+      std::vector<std::map<unsigned int, std::array<double, 10>>>;
+
+    /// The slave nodes each rank needs, their union and the complete forces
+    /// on them (a force is summed from the ranks that own its node or, at
+    /// a hanging node, its parents).
+    struct SharedNeeds
+    {
+      std::vector<std::vector<unsigned int>> of_rank;
+      std::vector<bool>                      any;
+      std::vector<Tensor<1, dim>>            forces;
+    };
+
+    SharedNeeds
+    share_needs(const std::vector<bool>           &needed,
+                const std::vector<Tensor<1, dim>> &forces,
+                const MPI_Comm                     comm)
+    {
+      const unsigned int        ns = needed.size();
+      std::vector<unsigned int> mine;
+      std::vector<double>       sums(dim * ns, 0.);
+      for (unsigned int j = 0; j < ns; ++j)
+        if (needed[j])
+          {
+            mine.push_back(j);
+            for (unsigned int c = 0; c < dim; ++c)
+              sums[dim * j + c] = forces[j][c];
+          }
+      SharedNeeds shared;
+      shared.of_rank = Utilities::MPI::all_gather(comm, mine);
+      Utilities::MPI::sum(sums, comm, sums);
+      shared.any.assign(ns, false);
+      shared.forces.resize(ns);
+      for (const auto &list : shared.of_rank)
+        for (const unsigned int j : list)
+          shared.any[j] = true;
+      for (unsigned int j = 0; j < ns; ++j)
+        for (unsigned int c = 0; c < dim; ++c)
+          shared.forces[j][c] = sums[dim * j + c];
+      return shared;
+    }
+
+    /// This rank's equal, contiguous share [first, second) of the face
+    /// pairs @p overlaps whose slave face has a node in @p any (contiguous:
+    /// the pairs of one slave face share its MortarFace).
+    std::pair<std::size_t, std::size_t>
+    face_pair_share(
+      const std::vector<std::pair<unsigned int, unsigned int>> &overlaps,
+      const ContactSurface                                     &slave,
+      const std::vector<bool>                                  &any,
+      const MPI_Comm                                            comm)
+    {
+      std::vector<std::size_t> touching;
+      for (std::size_t i = 0; i < overlaps.size(); ++i)
+        {
+          const auto &nodes = slave.faces[overlaps[i].first].nodes;
+          if (std::any_of(nodes.begin(),
+                          nodes.end(),
+                          [&](const unsigned int j) { return any[j]; }))
+            touching.push_back(i);
+        }
+      const std::size_t rank    = Utilities::MPI::this_mpi_process(comm);
+      const std::size_t n_ranks = Utilities::MPI::n_mpi_processes(comm);
+      const std::size_t begin   = touching.size() * rank / n_ranks;
+      const std::size_t end     = touching.size() * (rank + 1) / n_ranks;
+      if (begin == end)
+        return {0, 0};
+      return {touching[begin], touching[end - 1] + 1};
+    }
+
+    /// Sends the partial gradients of the nodes other ranks need to them,
+    /// drops those this rank does not need (@p needed) and adds what the
+    /// others computed for its own.
+    void
+    exchange_gradients(const SharedNeeds       &shared,
+                       const std::vector<bool> &needed,
+                       const MPI_Comm           comm,
+                       Gradients               &gradients)
+    {
+      const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+      // Per node: j, the number of entries, then per entry its key and
+      // the ten derivatives.
+      std::map<unsigned int, std::vector<double>> outgoing;
+      for (unsigned int q = 0; q < shared.of_rank.size(); ++q)
+        if (q != rank)
+          for (const unsigned int j : shared.of_rank[q])
+            if (!gradients[j].empty())
+              {
+                auto &data = outgoing[q];
+                data.push_back(j);
+                data.push_back(gradients[j].size());
+                for (const auto &[key, e] : gradients[j])
+                  {
+                    data.push_back(key);
+                    data.insert(data.end(), e.begin(), e.end());
+                  }
+              }
+      const auto incoming = Utilities::MPI::some_to_some(comm, outgoing);
+      for (unsigned int j = 0; j < needed.size(); ++j)
+        if (!needed[j])
+          gradients[j].clear();
+      for (const auto &[q, data] : incoming)
+        for (std::size_t i = 0; i < data.size();)
+          {
+            auto             &g = gradients[static_cast<unsigned int>(data[i])];
+            const std::size_t n = static_cast<std::size_t>(data[i + 1]);
+            i += 2;
+            for (std::size_t e = 0; e < n; ++e, i += 11)
+              {
+                auto &target = g[static_cast<unsigned int>(data[i])];
+                for (unsigned int a = 0; a < 10; ++a)
+                  target[a] += data[i + 1 + a];
+              }
+          }
+    }
+  } // namespace
+
+
+
   void
   ContactProblem::linearise_operators(
-    const Pair                                                  &pair,
-    const std::vector<bool>                                     &needed,
-    const std::vector<Tensor<1, dim>>                           &forces,
-    const bool                                                   slave_rows,
-    const AffineConstraints<double>                             &constraints,
-    const AssemblyTargets                                       &targets,
-    std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
-    const
+    const Pair                        &pair,
+    const std::vector<bool>           &needed,
+    const std::vector<Tensor<1, dim>> &forces,
+    const bool                         slave_rows,
+    const AffineConstraints<double>   &constraints,
+    const AssemblyTargets             &targets,
+    Gradients                         &gradients) const
   {
-    const MPI_Comm     comm    = discretisation.dof_handler.get_communicator();
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    const unsigned int ns      = pair.slave.nodes.size();
-    if (n_ranks == 1)
+    const MPI_Comm comm = discretisation.dof_handler.get_communicator();
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
       {
         integrate_face_pairs(pair,
                              needed,
@@ -47,89 +165,22 @@ namespace DuctileContact
                              gradients);
         return;
       }
-
-    // The nodes every rank needs and the forces on them (each force is
-    // summed from the ranks that own its node or, at a hanging node, its
-    // parents).
-    std::vector<unsigned int> mine;
-    std::vector<double>       force_sums(dim * ns, 0.);
-    for (unsigned int j = 0; j < ns; ++j)
-      if (needed[j])
-        {
-          mine.push_back(j);
-          for (unsigned int c = 0; c < dim; ++c)
-            force_sums[dim * j + c] = forces[j][c];
-        }
-    const auto needs = Utilities::MPI::all_gather(comm, mine);
-    Utilities::MPI::sum(force_sums, comm, force_sums);
-    std::vector<bool>           any(ns, false);
-    std::vector<Tensor<1, dim>> all_forces(ns);
-    for (const auto &list : needs)
-      for (const unsigned int j : list)
-        any[j] = true;
-    for (unsigned int j = 0; j < ns; ++j)
-      for (unsigned int c = 0; c < dim; ++c)
-        all_forces[j][c] = force_sums[dim * j + c];
-
-    // Every rank integrates an equal, contiguous share of the face pairs
-    // that touch a needed node (contiguous: the pairs of one slave face
-    // share its MortarFace), whichever rank owns their nodes.
-    std::vector<std::size_t> touching;
-    for (std::size_t i = 0; i < pair.overlaps.size(); ++i)
-      {
-        const auto &s_nodes = pair.slave.faces[pair.overlaps[i].first].nodes;
-        if (std::any_of(s_nodes.begin(),
-                        s_nodes.end(),
-                        [&](const unsigned int j) { return any[j]; }))
-          touching.push_back(i);
-      }
-    const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
-    const std::size_t  begin = touching.size() * rank / n_ranks;
-    const std::size_t  end   = touching.size() * (rank + 1) / n_ranks;
-    integrate_face_pairs(pair,
-                         any,
-                         all_forces,
-                         slave_rows,
-                         {begin < end ? touching[begin] : 0,
-                          begin < end ? touching[end - 1] + 1 : 0},
-                         constraints,
-                         targets,
-                         gradients);
-
-    // The partial gradients go to the ranks that need them.
-    std::map<unsigned int, std::vector<double>> outgoing;
-    for (unsigned int q = 0; q < n_ranks; ++q)
-      if (q != rank)
-        for (const unsigned int j : needs[q])
-          if (!gradients[j].empty())
-            {
-              auto &data = outgoing[q];
-              data.push_back(j);
-              data.push_back(gradients[j].size());
-              for (const auto &[key, e] : gradients[j])
-                {
-                  data.push_back(key);
-                  data.insert(data.end(), e.begin(), e.end());
-                }
-            }
-    const auto incoming = Utilities::MPI::some_to_some(comm, outgoing);
-    for (unsigned int j = 0; j < ns; ++j)
-      if (!needed[j])
-        gradients[j].clear();
-    for (const auto &[q, data] : incoming)
-      for (std::size_t i = 0; i < data.size();)
-        {
-          auto             &g = gradients[static_cast<unsigned int>(data[i])];
-          const std::size_t n = static_cast<std::size_t>(data[i + 1]);
-          i += 2;
-          for (std::size_t e = 0; e < n; ++e, i += 11)
-            {
-              auto &target = g[static_cast<unsigned int>(data[i])];
-              for (unsigned int a = 0; a < 10; ++a)
-                target[a] += data[i + 1 + a];
-            }
-        }
+    // Every rank integrates a share of the face pairs that any rank needs,
+    // whichever rank owns their nodes.
+    const SharedNeeds shared = share_needs(needed, forces, comm);
+    integrate_face_pairs(
+      pair,
+      shared.any,
+      shared.forces,
+      slave_rows,
+      face_pair_share(pair.overlaps, pair.slave, shared.any, comm),
+      constraints,
+      targets,
+      gradients);
+    exchange_gradients(shared, needed, comm, gradients);
   }
+
+
 
   void
   ContactProblem::integrate_face_pairs(
