@@ -17,7 +17,7 @@ before = {
     "sent_coarse": ("phase_field/sent_scene/runs/screen.txt", 2),
     "ductile_notch": ("plasticity/ductile_notch/runs/h0.05-delta1e-3/screen.txt",
                       2),
-    "hertz_sphere": ("contact/hertz_sphere/runs/h4-w0.2/screen.txt", 2),
+    "hertz_sphere": ("contact/hertz_sphere/runs/2026-11-al-amg/h4-w0.2/screen.txt", 2),
     "ironing": ("contact/ironing/runs/screen.txt", 1),
 }
 scenes = ["two_bodies", "block_on_plate", "sent_coarse", "ductile_notch",
