@@ -60,13 +60,13 @@ quantities = {
                     "0.52055 kN/mm x 0.025 mm, benchmarks/phase_field/"
                     "sent_scene"),
 }
-order = ["2026-12-02", "default", "single", "al", "direct", "amg"]
 names = {"2026-12-02": "defaults of 2026-12-02 (2a1bd1b)",
          "default": "current defaults",
          "single": "single-precision factors",
          "al": "augmented Lagrangian (2026-12-02)",
          "direct": "double-precision factors",
          "amg": "GMRES-AMG (the default before session 35)"}
+order = list(names)  # the variants in the order of the table
 
 
 def row(scene, variant, run):
