@@ -16,12 +16,16 @@ from runs_io import read_statistics  # noqa: E402
 
 uniform_root = os.path.join(here, "..", "..", "phase_field", "sent", "runs", "lf0.0075")
 # name in that folder -> (label, slab thickness [mm]: one element, h = l_f/ratio)
-uniform_runs = {"q2-h1-monolithic-direct-dt0.05-box6": ("by hand, h = l_f", 0.0075),
-                "q2-h2-monolithic-direct-dt0.05-box6": ("by hand, h = l_f/2", 0.00375)}
-adaptive_thickness = 0.00375  # mm (run.sh's coarse mesh)
+uniform_runs = {"q2-h1-monolithic-direct-dt0.05-box6": ("by hand, h = l_f", 0.0075, 1),
+                "q2-h2-monolithic-direct-dt0.05-box6": ("by hand, h = l_f/2", 0.00375, 2)}
+# run.sh's base meshes: name prefix -> (slab thickness [mm], in-plane h / l_f
+# of the cells that are refined, label)
+bases = {"": (0.00375, 8, "from h = 8 l_f"),
+         "graded-": (0.0075, 1, "from the mesh by hand at h = l_f")}
 
 
-def load(run, label, thickness_mm):
+def load(run, label, thickness_mm, refinement):
+    """refinement: l_f / h of the finest cells."""
     rows = read_statistics(os.path.join(run, "statistics"))
     screen = open(os.path.join(run, "screen.txt")).read()
     force = [r["F2_y"] / thickness_mm / 1e3 for r in rows]  # kN/mm
@@ -46,7 +50,7 @@ def load(run, label, thickness_mm):
         [int(re.search(r"DoFs: (\d+)", screen).group(1))]
     cells = int(last["cells"]) if "cells" in last else None
     at = [f for f, t in zip(force, times) if abs(t - 0.45) < 1e-9]
-    return dict(label=label, peak=force[k], upper=upper, u_peak=disp[k],
+    return dict(label=label, refinement=refinement, peak=force[k], upper=upper, u_peak=disp[k],
                 f_045=at[0] if at else float("nan"), dofs_peak=dofs[min(k, len(dofs) - 1)],
                 dofs_max=max(dofs), cells=cells, complete=complete, stopped=stopped,
                 newton=int(sum(r["newton_iterations"] for r in upto)),
@@ -56,17 +60,19 @@ def load(run, label, thickness_mm):
 
 
 runs = []
-for name, (label, t) in uniform_runs.items():
+for name, (label, t, k) in uniform_runs.items():
     d = os.path.join(uniform_root, name)
     if os.path.exists(os.path.join(d, "statistics")):
-        runs.append(load(d, label, t))
-for d in sorted(glob.glob(os.path.join(here, "runs", "level*"))):
+        runs.append(load(d, label, t, k))
+for d in sorted(glob.glob(os.path.join(here, "runs", "*level*"))):
     if os.path.exists(os.path.join(d, "statistics")):
-        m = re.match(r"level(\d+)-s([\d.]+)(?:-dtmin([\d.e-]+))?$", os.path.basename(d))
-        h = {4: "l_f/2", 5: "l_f/4"}.get(int(m.group(1)), "?")
-        dtmin = f", dt_min = {m.group(3)}" if m.group(3) else ""
-        runs.append(load(d, f"adaptive, level {m.group(1)} (h = {h}), s > {m.group(2)}{dtmin}",
-                         adaptive_thickness))
+        m = re.match(r"(graded-)?level(\d+)-s([\d.]+)(?:-dtmin([\d.e-]+))?$", os.path.basename(d))
+        thickness, h0, origin = bases[m.group(1) or ""]
+        level = int(m.group(2))
+        h = f"l_f/{2**level // h0}" if 2**level > h0 else f"{h0 // 2**level} l_f"
+        dtmin = f", dt_min = {m.group(4)}" if m.group(4) else ""
+        runs.append(load(d, f"adaptive {origin}, level {level} (h = {h}), s > {m.group(3)}{dtmin}",
+                         thickness, 2**level / h0))
 ref = next((r for r in runs if r["label"] == "by hand, h = l_f/2"), None)
 
 with open(os.path.join(here, "results.md"), "w") as out:
@@ -97,15 +103,26 @@ try:
     import matplotlib.pyplot as plt
 except ImportError:
     sys.exit(0)
-fig, ax = plt.subplots(figsize=(7, 4.8))
+fig, (ax, conv) = plt.subplots(1, 2, figsize=(12, 4.8), width_ratios=[3, 2])
 for r in runs:
     ax.plot(r["disp"], r["force"], marker=".", label=r["label"])
-ax.set_xlim(0.0036, 0.0048)
-ax.set_ylim(0.45, 0.62)
+ax.set_xlim(0.0044, 0.0047)
+ax.set_ylim(0.575, 0.61)
 ax.set_xlabel("top displacement [mm]")
 ax.set_ylabel("force per thickness [kN/mm]")
 ax.set_title("notched tension, l_f = 0.0075 mm, near the peak")
 ax.grid(True, alpha=0.3)
-ax.legend(fontsize=7)
+ax.legend(fontsize=6)
+# F_max against the finest h, where the limit point is bracketed closely.
+for r in runs:
+    if r["complete"] and r["upper"] - r["peak"] < 1e-3:
+        hand = r["label"].startswith("by hand")
+        conv.plot(1 / r["refinement"], r["peak"], "o" if hand else "s",
+                  color="C0" if hand else "C3", fillstyle="full" if hand else "none")
+conv.set_xscale("log", base=2)
+conv.set_xlabel("h / l_f at the crack (dots: by hand, squares: adaptive)")
+conv.set_ylabel("F_max [kN/mm]")
+conv.set_title("F_max under refinement")
+conv.grid(True, alpha=0.3)
 fig.tight_layout()
 fig.savefig(os.path.join(here, "sent_adaptive.png"), dpi=120)

@@ -10,8 +10,14 @@
 # 0.00375 mm = l_f/2 (make_sent.py's THICKNESS): Maximum level 4 makes cells
 # of h = l_f/2 in the plane where s exceeds the threshold, 16 layers thick
 # (every refinement halves a cell in all three directions).
+# The graded base mesh is the one refined by hand at h = l_f (a square of
+# half-width 6 l_f around the notch tip, one layer of l_f cubes): Maximum
+# level 1 and 2 refine it where s exceeds the threshold to h = l_f/2 (2
+# layers) and l_f/4 (4 layers), the level that the meshes by hand could not
+# afford (~340k unknowns in the whole square).
 # Usage: benchmarks/adaptive_refinement/sent/run.sh [NP] [RUN ...]
-#   RUN: names as in runs/ (e.g. level4-s0.05); default all. Runs whose
+#   RUN: names as in runs/ (e.g. level4-s0.05, graded-level2-s0.2); default
+#   all. Runs whose
 #   statistics are complete are kept. Then report.py writes results.md and
 #   sent_adaptive.png.
 set -euo pipefail
@@ -21,13 +27,21 @@ np=${1:-2}
 only=("${@:2}")
 require_build
 mkdir -p "$here/runs"
-mesh=$here/runs/sent_coarse_h0.06_t0.00375.msh
-[[ -f "$mesh" ]] || /usr/bin/python3 "$project_root/prm/meshes/make_sent.py" \
-  0.06 0.12 "$mesh" 0.98 1 0.00375 > /dev/null
+coarse=$here/runs/sent_coarse_h0.06_t0.00375.msh
+[[ -f "$coarse" ]] || /usr/bin/python3 "$project_root/prm/meshes/make_sent.py" \
+  0.06 0.12 "$coarse" 0.98 1 0.00375 > /dev/null
+graded=$here/runs/sent_graded_h0.0075_b0.045.msh
+[[ -f "$graded" ]] || /usr/bin/python3 "$project_root/prm/meshes/make_sent.py" \
+  0.0075 0.045 "$graded" 0.545 > /dev/null
 
-run() { # level threshold [minimum time step]
-  local level=$1 threshold=$2 dtmin=${3:-0.00625} name dir
-  name="level$level-s$threshold${3:+-dtmin$3}"
+run() { # base level threshold [minimum time step]
+  local base=$1 level=$2 threshold=$3 dtmin=${4:-0.00625} name dir mesh
+  mesh=$coarse
+  name="level$level-s$threshold${4:+-dtmin$4}"
+  if [[ "$base" == graded ]]; then
+    mesh=$graded
+    name="graded-$name"
+  fi
   if ((${#only[@]})) && [[ " ${only[*]} " != *" $name "* ]]; then return; fi
   dir=$here/runs/$name
   if run_finished "$dir"; then
@@ -55,9 +69,11 @@ PRM
   grep -E "Total wallclock" "$dir/screen.txt" || true
 }
 
-run 4 0.05   # stopped at t = 0.3: 174k DoFs, more than the mesh by hand
-run 4 0.2
-run 4 0.2 3.125e-4   # the reference's minimum step: closes in on the limit point
-run 4 0.4
-run 5 0.2
+run coarse 4 0.05   # stopped at t = 0.3: 174k DoFs, more than the mesh by hand
+run coarse 4 0.2
+run coarse 4 0.2 3.125e-4   # the reference's minimum step: closes in on the limit point
+# From the mesh by hand at h = l_f, with the reference's minimum step:
+run graded 2 0.2 3.125e-4   # h = l_f/4 where s > 0.2
+run graded 2 0.1 3.125e-4   # the same where s > 0.1: the threshold's effect
+run graded 1 0.2 3.125e-4   # h = l_f/2 where s > 0.2 (against the mesh by hand)
 /usr/bin/python3 "$here/report.py"
