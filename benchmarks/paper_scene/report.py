@@ -6,8 +6,8 @@ at 16.95 mm and its peak; max s, max alpha, crack energy, plastic work,
 frictional dissipation, the energy balance; and the change of the force
 curve against the paper run (the convergence in eta_p, eta_f, dt and h).
 Writes results.md and force.png, damage.png, energies.png."""
+import math
 import os
-import re
 import sys
 
 import matplotlib
@@ -33,6 +33,13 @@ names = {
                             "first yield), at most once (unknowns: at the end)",
     "clamp_adaptive2": "adaptive refinement where alpha > 0.002, at most "
                        "twice (unknowns: at the end)",
+    "paper_du0.6": "the paper mesh at 0.6 mm per step, single-precision "
+                   "factors (the mesh study's coarsest mesh)",
+    "clamp_refined_du0.6": "clamp_refined at 0.6 mm per step, "
+                           "single-precision factors",
+    "hinge_refined2_du0.6": "clamp_refined and the plate refined once more "
+                            "for x > 0.268 m (the hinge), 0.6 mm per step, "
+                            "single-precision factors",
     "ductile_zeta1": "plastic work driver, w_c = 0, zeta = 1",
     "ductile": "plastic work driver, w_c = 5e5 J/m^3, zeta = 10",
     "ductile_zeta30": "plastic work driver, w_c = 5e5 J/m^3, zeta = 30",
@@ -109,6 +116,33 @@ def summary(variant, run, reference):
     ]
 
 
+def mesh_study(runs):
+    """The three meshes at 0.6 mm per step: |F2_z| at common loads, the
+    differences between successive meshes and the observed order
+    log2(d1 / d2) where both differences are large enough to mean it."""
+    study = ["paper_du0.6", "clamp_refined_du0.6", "hinge_refined2_du0.6"]
+    if not all(v in runs for v in study):
+        return []
+    forces = [force_at_integer_steps(runs[v]["rows"]) for v in study]
+    common = sorted(set(forces[0]) & set(forces[1]) & set(forces[2]))
+    lines = ["", "## Mesh study at 0.6 mm per step", "",
+             "|F2_z| [kN] on the paper mesh (h), refined once at the clamp "
+             "(h/2 for x > 0.22 m) and once more at the hinge (h/4 for x > "
+             "0.268 m); d1, d2: the differences h - h/2 and h/2 - h/4; order "
+             "log2(d1/d2).", "",
+             "| u [mm] | h | h/2 | h/4 | d1 | d2 | order |", "|---|---|---|---|---|---|---|"]
+    for k in common:
+        if k == 0 or (k % 16 and k != common[-1]):
+            continue
+        f = [g[k] / 1e3 for g in forces]
+        d1, d2 = f[0] - f[1], f[1] - f[2]
+        order = (f"{math.log2(d1 / d2):.2f}" if d1 * d2 > 0
+                 and abs(d1) > 1e-3 * f[0] else "-")
+        lines.append(f"| {k * 0.15:.2f} | {f[0]:.4f} | {f[1]:.4f} | "
+                     f"{f[2]:.4f} | {d1:+.4f} | {d2:+.4f} | {order} |")
+    return lines
+
+
 def main():
     runs = {v: load(v) for v in order}
     runs = {v: r for v, r in runs.items() if r}
@@ -130,6 +164,7 @@ def main():
               "the largest "
               "difference of |F2_z| at the paper run's load steps over the "
               "paper run's peak."]
+    lines += mesh_study(runs)
     open(os.path.join(here, "results.md"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
 
