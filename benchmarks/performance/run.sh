@@ -6,8 +6,10 @@
 # scenes with the augmented Lagrangian (the enforcement before the
 # semi-smooth Newton method), and hertz_sphere with double-precision
 # factors (variant direct) and with GMRES-AMG (variant amg, its default
-# before session 35). Runs of earlier code are kept under another
-# variant name (e.g. runs/SCENE/2026-12-02) for a before/after.
+# before session 35), and sent_coarse, whose default is the linear
+# predictor since session 36, with the constant one (variant constant).
+# Runs of earlier code are kept under another variant name (e.g.
+# runs/SCENE/2026-12-02) for a before/after.
 # report.py writes results.md: wall time, Newton and linear iterations, time
 # per Newton iteration split into bulk assembly / contact / linear solve /
 # rest, peak memory, and each scene's quantity of interest against its
@@ -30,13 +32,14 @@ declare -A variants=(
   [hertz_sphere]="default direct amg"
   [ironing]="default single"
   [ductile_notch]="default single"
-  [sent_coarse]="default single"
+  [sent_coarse]="default constant single"
 )
 declare -A settings=(
   [al]="subsection Contact pair 1;  set Enforcement = augmented Lagrangian;end"
   [single]="subsection Linear solver;  set Factorisation precision = single;end"
   [direct]="subsection Linear solver;  set Type = direct;  set Factorisation precision = double;end"
   [amg]="subsection Linear solver;  set Type = gmres-amg;end"
+  [constant]="subsection Load stepping;  set Predictor = constant;end"
 )
 order=(box_compression necking_bar two_bodies block_on_plate hertz_sphere ironing ductile_notch sent_coarse)
 

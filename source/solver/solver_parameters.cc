@@ -68,7 +68,11 @@ namespace DuctileContact
       "overshoot the yield stress by a whole step's strain). 'linear': the "
       "last converged state plus the last step's increment scaled by the "
       "ratio of the step sizes (from the second step on; for monotonic "
-      "loading the first residual is then of second order in the step).");
+      "loading the first residual is then of second order in the step, and "
+      "the notched and necking scenes of prm/ use it). Not for load paths "
+      "with a kink or long frictional sliding: prm/ironing.prm, pressed "
+      "and then dragged, needs 14-17 iterations per sliding step with it "
+      "and stalls.");
     prm.leave_subsection();
   }
 

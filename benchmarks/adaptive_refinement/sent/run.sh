@@ -16,10 +16,9 @@
 # layers) and l_f/4 (4 layers), the level that the meshes by hand could not
 # afford (~340k unknowns in the whole square).
 # Usage: benchmarks/adaptive_refinement/sent/run.sh [NP] [RUN ...]
-#   RUN: names as in runs/ (e.g. level4-s0.05, graded-level2-s0.2); default
-#   all. Runs whose
-#   statistics are complete are kept. Then report.py writes results.md and
-#   sent_adaptive.png.
+#   RUN: names as in runs/ (e.g. level4-s0.05, graded-level2-s0.2-dtmin3.125e-4);
+#   default all. Runs whose statistics are complete are kept. Then report.py
+#   writes results.md and sent_adaptive.png.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
