@@ -75,4 +75,26 @@ run coarse 4 0.2 3.125e-4   # the reference's minimum step: closes in on the lim
 run graded 2 0.2 3.125e-4   # h = l_f/4 where s > 0.2
 run graded 2 0.1 3.125e-4   # the same where s > 0.1: the threshold's effect
 run graded 1 0.2 3.125e-4   # h = l_f/2 where s > 0.2 (against the mesh by hand)
+# The reference itself (benchmarks/phase_field/sent's h = l_f/2 mesh by hand,
+# run there with the code of November) again with this code, for its wall
+# time beside the adaptive runs.
+reference=by-hand-h2-session36
+if ((${#only[@]} == 0)) || [[ " ${only[*]} " == *" $reference "* ]]; then
+  dir=$here/runs/$reference
+  if run_finished "$dir"; then
+    echo "== $reference (done)"
+  else
+    mesh=$here/runs/sent_h0.00375_b0.045_x0.545.msh
+    [[ -f "$mesh" ]] || /usr/bin/python3 "$project_root/prm/meshes/make_sent.py" \
+      0.00375 0.045 "$mesh" 0.545 > /dev/null
+    mkdir -p "$dir"
+    sed -e "s|@MESH@|$mesh|" -e "s|@LF@|7.5e-06|" -e "s|@DEGREE@|2|" \
+      -e "s|@STRATEGY@|monolithic|" -e "s|@DEPTH@|0|" -e "s|@SOLVER@|direct|" \
+      -e "s|@PFPREC@|amg|" -e "s|@DT@|0.05|" -e "s|@DTMIN@|3.125e-4|" \
+      -e "s|@END@|0.48|" -e "s|@ETA@|0|" -e "s|@DIR@|$dir|" \
+      "$project_root/benchmarks/phase_field/sent/scene.prm.in" > "$dir/scene.prm"
+    echo "== $reference ($(date +%H:%M))"
+    run_scene "$np" "$dir"
+  fi
+fi
 /usr/bin/python3 "$here/report.py"
