@@ -15,12 +15,16 @@ sys.path.insert(0, os.path.join(here, "..", ".."))
 from runs_io import read_statistics  # noqa: E402
 
 uniform_root = os.path.join(here, "..", "..", "phase_field", "sent", "runs", "lf0.0075")
-# name in that folder -> (label, slab thickness [mm]: one element, h = l_f/ratio)
-uniform_runs = {"q2-h1-monolithic-direct-dt0.05-box6": ("by hand, h = l_f", 0.0075, 1),
-                "q2-h2-monolithic-direct-dt0.05-box6": ("by hand, h = l_f/2", 0.00375, 2)}
-# The reference run again with this session's code (run.sh's last run),
-# for the wall time: name in runs/ -> (label, thickness [mm], l_f / h)
-reruns = {"by-hand-h2-session36": ("by hand, h = l_f/2, rerun 2026-12-04", 0.00375, 2)}
+# The meshes by hand: run folder -> (label, slab thickness [mm]: one element,
+# l_f / h); the last is the reference run again with this session's code
+# (run.sh's last run), for the wall time.
+by_hand_runs = {
+    os.path.join(uniform_root, "q2-h1-monolithic-direct-dt0.05-box6"):
+        ("by hand, h = l_f", 0.0075, 1),
+    os.path.join(uniform_root, "q2-h2-monolithic-direct-dt0.05-box6"):
+        ("by hand, h = l_f/2", 0.00375, 2),
+    os.path.join(here, "runs", "by-hand-h2-session36"):
+        ("by hand, h = l_f/2, rerun 2026-12-04", 0.00375, 2)}
 # run.sh's base meshes: name prefix -> (slab thickness [mm], in-plane h / l_f
 # of the cells that are refined, label)
 bases = {"": (0.00375, 8, "from h = 8 l_f"),
@@ -63,12 +67,7 @@ def load(run, label, thickness_mm, refinement):
 
 
 runs = []
-for name, (label, t, k) in uniform_runs.items():
-    d = os.path.join(uniform_root, name)
-    if os.path.exists(os.path.join(d, "statistics")):
-        runs.append(load(d, label, t, k))
-for name, (label, t, k) in reruns.items():
-    d = os.path.join(here, "runs", name)
+for d, (label, t, k) in by_hand_runs.items():
     if os.path.exists(os.path.join(d, "statistics")):
         runs.append(load(d, label, t, k))
 for d in sorted(glob.glob(os.path.join(here, "runs", "*level*"))):

@@ -32,15 +32,15 @@ coarse=$here/runs/sent_coarse_h0.06_t0.00375.msh
 graded=$here/runs/sent_graded_h0.0075_b0.045.msh
 [[ -f "$graded" ]] || /usr/bin/python3 "$project_root/prm/meshes/make_sent.py" \
   0.0075 0.045 "$graded" 0.545 > /dev/null
+by_hand=$here/runs/sent_h0.00375_b0.045_x0.545.msh
+[[ -f "$by_hand" ]] || /usr/bin/python3 "$project_root/prm/meshes/make_sent.py" \
+  0.00375 0.045 "$by_hand" 0.545 > /dev/null
 
-run() { # base level threshold [minimum time step]
-  local base=$1 level=$2 threshold=$3 dtmin=${4:-0.00625} name dir mesh
-  mesh=$coarse
-  name="level$level-s$threshold${4:+-dtmin$4}"
-  if [[ "$base" == graded ]]; then
-    mesh=$graded
-    name="graded-$name"
-  fi
+# run_scene_on MESH NAME DTMIN [PRM LINES]: the scene of
+# benchmarks/phase_field/sent on MESH with the minimum step DTMIN and the
+# lines appended, in runs/NAME (skipped when done or not asked for).
+run_scene_on() {
+  local mesh=$1 name=$2 dtmin=$3 extra=${4:-} dir
   if ((${#only[@]})) && [[ " ${only[*]} " != *" $name "* ]]; then return; fi
   dir=$here/runs/$name
   if run_finished "$dir"; then
@@ -53,8 +53,21 @@ run() { # base level threshold [minimum time step]
     -e "s|@PFPREC@|amg|" -e "s|@DT@|0.05|" -e "s|@DTMIN@|$dtmin|" \
     -e "s|@END@|0.48|" -e "s|@ETA@|0|" -e "s|@DIR@|$dir|" \
     "$project_root/benchmarks/phase_field/sent/scene.prm.in" > "$dir/scene.prm"
-  cat >> "$dir/scene.prm" <<PRM
-subsection Mesh
+  printf '%s' "$extra" >> "$dir/scene.prm"
+  echo "== $name ($(date +%H:%M))"
+  run_scene "$np" "$dir"
+  grep -E "Total wallclock" "$dir/screen.txt" || true
+}
+
+run() { # base level threshold [minimum time step]
+  local base=$1 level=$2 threshold=$3 dtmin=${4:-0.00625} name mesh
+  mesh=$coarse
+  name="level$level-s$threshold${4:+-dtmin$4}"
+  if [[ "$base" == graded ]]; then
+    mesh=$graded
+    name="graded-$name"
+  fi
+  run_scene_on "$mesh" "$name" "$dtmin" "subsection Mesh
   subsection Adaptive refinement
     set Enabled                 = true
     set Phase-field threshold   = $threshold
@@ -62,10 +75,7 @@ subsection Mesh
     set Maximum passes per step = 6
   end
 end
-PRM
-  echo "== $name ($(date +%H:%M))"
-  run_scene "$np" "$dir"
-  grep -E "Total wallclock" "$dir/screen.txt" || true
+"
 }
 
 run coarse 4 0.05   # stopped at t = 0.3: 174k DoFs, more than the mesh by hand
@@ -78,23 +88,5 @@ run graded 1 0.2 3.125e-4   # h = l_f/2 where s > 0.2 (against the mesh by hand)
 # The reference itself (benchmarks/phase_field/sent's h = l_f/2 mesh by hand,
 # run there with the code of November) again with this code, for its wall
 # time beside the adaptive runs.
-reference=by-hand-h2-session36
-if ((${#only[@]} == 0)) || [[ " ${only[*]} " == *" $reference "* ]]; then
-  dir=$here/runs/$reference
-  if run_finished "$dir"; then
-    echo "== $reference (done)"
-  else
-    mesh=$here/runs/sent_h0.00375_b0.045_x0.545.msh
-    [[ -f "$mesh" ]] || /usr/bin/python3 "$project_root/prm/meshes/make_sent.py" \
-      0.00375 0.045 "$mesh" 0.545 > /dev/null
-    mkdir -p "$dir"
-    sed -e "s|@MESH@|$mesh|" -e "s|@LF@|7.5e-06|" -e "s|@DEGREE@|2|" \
-      -e "s|@STRATEGY@|monolithic|" -e "s|@DEPTH@|0|" -e "s|@SOLVER@|direct|" \
-      -e "s|@PFPREC@|amg|" -e "s|@DT@|0.05|" -e "s|@DTMIN@|3.125e-4|" \
-      -e "s|@END@|0.48|" -e "s|@ETA@|0|" -e "s|@DIR@|$dir|" \
-      "$project_root/benchmarks/phase_field/sent/scene.prm.in" > "$dir/scene.prm"
-    echo "== $reference ($(date +%H:%M))"
-    run_scene "$np" "$dir"
-  fi
-fi
+run_scene_on "$by_hand" by-hand-h2-session36 3.125e-4
 /usr/bin/python3 "$here/report.py"
