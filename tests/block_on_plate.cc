@@ -25,10 +25,10 @@
 //    dissipation all nonzero at the end;
 //  - s never decreases at any DoF (Irreversibility = history and bound);
 //  - the coupled tangent is the derivative of the coupled residual
-//    (Newton/Check tangent: central differences along the last update of
+//    (Newton/Check tangent: difference quotients along the last update of
 //    each step, 1e-4 relative) in at least 3/4 of the steps (the others
-//    have a kink within the difference step: a contact node or a yield,
-//    loading or stick/slip switch);
+//    may have a kink within every difference step: a contact node or a
+//    yield, loading or stick/slip switch);
 //  - Newton converges superlinearly: the observed order, where defined,
 //    has a median above 1.3 (not 2: the switches above still flip in the
 //    last iterations of a step, visible with Output/Verbosity = 2 as a

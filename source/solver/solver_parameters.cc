@@ -135,16 +135,20 @@ namespace DuctileContact
       check_tangent,
       "For developers of materials and contact terms: compare the tangent "
       "with central finite differences of the residual along every Newton "
-      "update, |K d - (R(u + e d) - R(u - e d)) / 2e| / |K d| on the free "
-      "DoFs (two extra residual assemblies per iteration; printed with "
-      "Verbosity = 2); the value of the last update of each step, the one "
+      "update d, |K d - dR/de| / |K d| on the free DoFs, printed with "
+      "Verbosity = 2; the value of the last update of each step, the one "
       "nearest the solution, goes to the statistics column tangent_error. "
-      "Expect round-off (1e-6 or less) except where the residual has a kink "
-      "within the difference step (a node just touching, flush edges). The "
+      "The quotients of second and fourth order are taken with steps e d of "
+      "1e-6, 1e-5, ... of |x| until the residual's round-off (eps times the "
+      "terms summed into it) is below 1e-5 of e |K d|, at most 1e-3 of |x| "
+      "(up to 16 extra residual assemblies per iteration), and the smallest "
+      "error counts: near convergence |K d| is many orders below those terms, "
+      "so a short step measures round-off, a long one meets the residual's "
+      "curvature and kinks. Expect 1e-5 or less except where the residual has "
+      "a kink within every step (a node just touching, flush edges). The "
       "screen shows the ratio per block (u, alpha, s) as well: the alpha and "
       "s rows are small next to those of u, so their errors hide in the "
-      "global ratio; in their blocks the difference quotient's round-off "
-      "can reach 1e-4.");
+      "global ratio, and their own round-off can reach 1e-4.");
     prm.leave_subsection();
   }
 

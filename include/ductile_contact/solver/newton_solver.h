@@ -92,10 +92,15 @@ namespace DuctileContact
                 double             &step_length,
                 ResidualEvaluation &trial);
 
-    /// Newton/Check tangent: |K delta - (R(x + e delta) - R(x - e delta)) /
-    /// 2e| / |K delta| on the compared rows, e delta of 1e-6 the size of x.
+    /// Newton/Check tangent: |K delta - dR/de| / |K delta| on the compared
+    /// rows, dR/de by central quotients of second and fourth order with e
+    /// delta of 1e-6, 1e-5, ... the size of x, until the residual's
+    /// round-off (@p round_off, by block, of the assembly at x) falls below
+    /// 1e-5 of e |K delta| (at most 1e-3 the size of x); the smallest error.
     double
-    tangent_error(NonlinearProblem &problem, const Vector &x);
+    tangent_error(NonlinearProblem          &problem,
+                  const Vector              &x,
+                  const std::vector<double> &round_off);
 
     Norms
     tolerances(const ResidualEvaluation &evaluation) const;
