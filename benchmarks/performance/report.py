@@ -62,7 +62,7 @@ quantities = {
 }
 names = {"2026-12-02": "defaults of 2026-12-02 (2a1bd1b)",
          "default": "current defaults",
-         "constant": "constant predictor (the default before session 36)",
+         "constant": "constant predictor (the default before the linear one)",
          "single": "single-precision factors",
          "al": "augmented Lagrangian (2026-12-02)",
          "direct": "double-precision factors",

@@ -6,8 +6,9 @@
 # scenes with the augmented Lagrangian (the enforcement before the
 # semi-smooth Newton method), and hertz_sphere with double-precision
 # factors (variant direct) and with GMRES-AMG (variant amg, its default
-# before session 35), and sent_coarse, whose default is the linear
-# predictor since session 36, with the constant one (variant constant).
+# before session 35), and the scenes whose default is the linear
+# predictor since session 36 (sent_coarse) or 37 (two_bodies,
+# block_on_plate) with the constant one (variant constant).
 # Runs of earlier code are kept under another variant name (e.g.
 # runs/SCENE/2026-12-02) for a before/after.
 # report.py writes results.md: wall time, Newton and linear iterations, time
@@ -27,8 +28,8 @@ require_build
 declare -A variants=(
   [box_compression]="default single"
   [necking_bar]="default single"
-  [two_bodies]="default al single"
-  [block_on_plate]="default"
+  [two_bodies]="default constant al single"
+  [block_on_plate]="default constant"
   [hertz_sphere]="default direct amg"
   [ironing]="default single"
   [ductile_notch]="default single"
