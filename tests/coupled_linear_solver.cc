@@ -8,8 +8,11 @@
 // x_exact, b = K x_exact; each solver must return x_exact to 1e-6 relative:
 //  - direct with KLU and MUMPS on the monolithic copy of the nine blocks,
 //    also after the values change (the copied pattern is reused) and after
-//    setup() (the pattern is rebuilt); MUMPS with single-precision factors
-//    (through flexible GMRES: the rounded triangular solves are not one
+//    setup() (the pattern is rebuilt); MUMPS with the factors of the last
+//    matrix through GMRES after a small change of the couplings (2 to 20
+//    iterations) and after a large one (giving up within 10 of the ~55
+//    iterations left, then factorising again); MUMPS with single-precision
+//    factors (through flexible GMRES: the rounded triangular solves are not one
 //    fixed linear map, and plain GMRES reported a residual ~1e3 below the
 //    true one), and with a tolerance GMRES cannot reach, where it must
 //    factorise again in double precision;
@@ -282,7 +285,7 @@ namespace
     assemble(d, d.hanging_node_constraints, 2., K);
     parameters.type             = LinearSolverType::direct;
     parameters.direct_solver    = DirectSolver::mumps;
-    parameters.reuse_iterations = 20;
+    parameters.reuse_iterations = 60;
     check("direct after a change of values", 0);
     // A small change: GMRES with the factors of the last matrix.
     assemble(d, d.hanging_node_constraints, 2.1, K);
@@ -297,6 +300,25 @@ namespace
           << Testing::yes_no(its >= 2 && its <= 20) << std::endl;
       std::cout << "reuse: " << its << " iterations" << std::endl;
     }
+    // A large change: the factors of the last matrix cannot bring GMRES to
+    // the tolerance within the ~55 iterations left; it must give up within
+    // 10 (ProjectedGmresControl) and factorise again.
+    assemble(d, d.hanging_node_constraints, 8., K);
+    {
+      K.vmult(b, x_exact);
+      x = 0;
+      solver.solve(K, x, b);
+      x -= x_exact;
+      const auto [failed, spent] = solver.failed_reuse_counts();
+      out << "  direct after a large change: error < 1e-6: "
+          << Testing::yes_no(x.l2_norm() / x_exact.l2_norm() < 1e-6)
+          << ", GMRES with old factors gave up within 10 iterations: "
+          << Testing::yes_no(failed == 1 && spent <= 10) << std::endl;
+      std::cout << "large change: " << failed << " failed reuse, " << spent
+                << " solves, error " << x.l2_norm() / x_exact.l2_norm()
+                << std::endl;
+    }
+    assemble(d, d.hanging_node_constraints, 2.1, K);
     parameters.reuse_iterations = 0;
     solver.setup();
     check("direct after setup()", 0);

@@ -15,6 +15,7 @@
 #include <array>
 #include <memory>
 #include <ostream>
+#include <utility>
 #include <vector>
 
 namespace DuctileContact
@@ -71,6 +72,11 @@ namespace DuctileContact
     unsigned int
     fallback_factorisations() const;
 
+    /// GMRES runs on old factors that missed the tolerance or gave up
+    /// early, and the triangular solves they spent.
+    std::pair<unsigned int, unsigned int>
+    failed_reuse_counts() const;
+
   private:
     /// The displacement block alone (alpha and s empty).
     unsigned int
@@ -87,12 +93,16 @@ namespace DuctileContact
                  const dealii::TrilinosWrappers::MPI::Vector  &b);
 
     /// GMRES preconditioned by the last MUMPS factors; 0 if it did not
-    /// reach the tolerance within @p max_iterations.
+    /// reach the tolerance within @p max_iterations, or, with
+    /// @p give_up_early, once the rate of its last iterations says it
+    /// would need more than twice the iterations left
+    /// (ProjectedGmresControl).
     unsigned int
     solve_with_old_factors(const dealii::TrilinosWrappers::SparseMatrix &A,
                            dealii::TrilinosWrappers::MPI::Vector        &x,
                            const dealii::TrilinosWrappers::MPI::Vector  &b,
-                           unsigned int max_iterations);
+                           unsigned int max_iterations,
+                           bool         give_up_early);
 
     /// The direct solver on the monolithic copy of the coupled system.
     unsigned int
