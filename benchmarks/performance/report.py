@@ -61,6 +61,7 @@ quantities = {
                     "sent_scene"),
 }
 names = {"2026-12-02": "defaults of 2026-12-02 (2a1bd1b)",
+         "before-give-up": "defaults before GMRES gave up early (sessions 35-36)",
          "default": "current defaults",
          "constant": "constant predictor (the default before the linear one)",
          "single": "single-precision factors",

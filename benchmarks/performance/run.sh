@@ -2,11 +2,11 @@
 # Issue #24: every shipped scene that finishes within an hour, run whole on
 # 2 MPI ranks with the current defaults, once more with single-precision
 # MUMPS factors (variant single, to choose that default; not for
-# hertz_sphere, whose default it is), and the contact
+# hertz_sphere and block_on_plate, whose default it is), and the contact
 # scenes with the augmented Lagrangian (the enforcement before the
-# semi-smooth Newton method), and hertz_sphere with double-precision
-# factors (variant direct) and with GMRES-AMG (variant amg, its default
-# before session 35), and the scenes whose default is the linear
+# semi-smooth Newton method), hertz_sphere and block_on_plate with
+# double-precision factors (variant direct), hertz_sphere with GMRES-AMG
+# (variant amg, its default before session 35), and the scenes whose default is the linear
 # predictor since session 36 (sent_coarse) or 37 (two_bodies,
 # block_on_plate) with the constant one (variant constant).
 # Runs of earlier code are kept under another variant name (e.g.
@@ -29,7 +29,7 @@ declare -A variants=(
   [box_compression]="default single"
   [necking_bar]="default single"
   [two_bodies]="default constant al single"
-  [block_on_plate]="default constant"
+  [block_on_plate]="default direct constant"
   [hertz_sphere]="default direct amg"
   [ironing]="default single"
   [ductile_notch]="default single"
