@@ -285,6 +285,12 @@ namespace DuctileContact
                      const Factorisation     factorisation,
                      const F                &f)
     {
+      // The global number of each local column, looked up once per column
+      // rather than once per entry.
+      std::vector<int> column_gid(A.NumMyCols());
+      for (int c = 0; c < A.NumMyCols(); ++c)
+        column_gid[c] =
+          static_cast<int>(TrilinosWrappers::global_column_index(A, c)) + 1;
       for (int r = 0; r < A.NumMyRows(); ++r)
         {
           int     n;
@@ -295,10 +301,7 @@ namespace DuctileContact
             static_cast<int>(TrilinosWrappers::global_row_index(A, r)) + 1;
           for (int k = 0; k < n; ++k)
             {
-              const int j =
-                static_cast<int>(
-                  TrilinosWrappers::global_column_index(A, indices[k])) +
-                1;
+              const int j = column_gid[indices[k]];
               if (factorisation == Factorisation::ldlt && j < i)
                 continue;
               f(i, j, values[k]);
