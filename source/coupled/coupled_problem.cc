@@ -325,6 +325,30 @@ namespace DuctileContact
 
 
   bool
+  CoupledProblem::keeps_tangent() const
+  {
+    // The bound's rows are those of the iterate's active set.
+    return !bound_engaged;
+  }
+
+
+
+  ResidualEvaluation
+  CoupledProblem::assemble_right_hand_side(const Vector &x)
+  {
+    (void)x; // the state is u_ghosted, set by begin_iteration()
+    Assert(keeps_tangent(), ExcInternalError());
+    AssemblyTargets targets{nullptr, &newton_rhs, &residual, &force};
+    targets.branch_record = &branches;
+    targets.branches      = Branches::record;
+    last_info             = assemble(targets);
+    bound_applied         = false;
+    return evaluation(last_info);
+  }
+
+
+
+  bool
   CoupledProblem::converged(const Vector              &x,
                             const std::vector<double> &tolerances)
   {

@@ -278,13 +278,16 @@ namespace DuctileContact
     // its own state contradicts: its residual is then not the true one,
     // which the next assembly computes.
     bool branches_changed = false;
+    // Whether this iteration keeps the last tangent (Tangent update).
+    bool chord = false;
     for (unsigned int it = 0;; ++it)
       {
         const bool         pending = problem.begin_iteration(x);
         ResidualEvaluation evaluation;
         {
           TimerOutput::Scope scope(monitor.timer, "assembly");
-          evaluation = problem.assemble_system(x);
+          evaluation = chord ? problem.assemble_right_hand_side(x)
+                             : problem.assemble_system(x);
         }
         Norms       n   = evaluation.norms;
         const Norms tol = tolerances(evaluation);
@@ -309,6 +312,16 @@ namespace DuctileContact
         if ((it == 0 || branches_changed) && !pending &&
             converged(problem, x, evaluation, report))
           return report;
+        if (chord && !problem.keeps_tangent())
+          {
+            // converged() changed the equations here: their tangent.
+            TimerOutput::Scope scope(monitor.timer, "assembly");
+            evaluation = problem.assemble_system(x);
+            chord      = false;
+          }
+        if (chord)
+          monitor.out << "        chord step: the last tangent kept"
+                      << std::endl;
         n = problem.modify_linear_system(x);
         r = merit(n, tol);
 
@@ -343,7 +356,7 @@ namespace DuctileContact
                              "finite (NaN or Inf)";
             return report;
           }
-        if (parameters.check_tangent && !pending)
+        if (parameters.check_tangent && !pending && !chord)
           report.tangent_error =
             tangent_error(problem, x, evaluation.round_off);
 
@@ -366,6 +379,13 @@ namespace DuctileContact
         print(problem, it + 1, trial, still_pending);
         report.iterations = it + 1;
         branches_changed  = trial.branch_changes > 0;
+        // After a full Newton step that reduced the merit 100-fold, its
+        // tangent serves the next iteration too, and the one after while
+        // each such chord step reduces the merit 10-fold.
+        chord = parameters.tangent_update == TangentUpdate::chord &&
+                !still_pending && step_length == 1. &&
+                (chord ? 10. : 100.) * merit(trial.norms, tol) <= r &&
+                problem.keeps_tangent();
         if (!still_pending && !branches_changed &&
             converged(problem, x, trial, report))
           return report;

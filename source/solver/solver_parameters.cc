@@ -149,6 +149,26 @@ namespace DuctileContact
       "screen shows the ratio per block (u, alpha, s) as well: the alpha and "
       "s rows are small next to those of u, so their errors hide in the "
       "global ratio, and their own round-off can reach 1e-4.");
+    add_option(
+      prm,
+      "Tangent update",
+      tangent_update,
+      tangent_update_names(),
+      "'every iteration': Newton's method, the tangent assembled at every "
+      "iterate. 'chord after a quadratic step': after a full Newton update "
+      "(step length 1, boundary data reached by it) that brought the residual, "
+      "in "
+      "units of its tolerances, down by 100 or more, the next iteration keeps "
+      "the matrix of the linear system (and so the factors of the direct "
+      "solver) and assembles the residual only, with the branches of the new "
+      "iterate (a chord step); chord steps go on while each brings the "
+      "residual down by 10 or more, else a full iteration follows. "
+      "The converged state is the same (Newton's tolerances decide), the "
+      "iteration is cheaper where the second iteration of a step only "
+      "corrects small changes: in prm/block_on_plate.prm the crack driver's "
+      "loading points that switch on during the first update "
+      "(benchmarks/performance). Not while the phase-field bound s >= s_n "
+      "holds DoFs (its rows follow the iterate).");
     prm.leave_subsection();
   }
 

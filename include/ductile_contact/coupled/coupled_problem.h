@@ -114,6 +114,10 @@ namespace DuctileContact
     ResidualEvaluation
     assemble_residual(const Vector &x) override;
     bool
+    keeps_tangent() const override;
+    ResidualEvaluation
+    assemble_right_hand_side(const Vector &x) override;
+    bool
     converged(const Vector &x, const std::vector<double> &tolerances) override;
     std::vector<double>
     modify_linear_system(const Vector &x) override;

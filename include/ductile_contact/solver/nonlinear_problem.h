@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <limits>
@@ -42,7 +43,9 @@ namespace DuctileContact
    *   begin_iteration(x)       constraints of the iterate (prescribed
    *                            values reached through the update);
    *   assemble_system(x)       tangent K, right-hand side -R and R; the
-   *                            branches of non-smooth terms are recorded;
+   *                            branches of non-smooth terms are recorded
+   *                            (assemble_right_hand_side(x) in a chord
+   *                            step: -R and R only, K kept);
    *   [converged(x, tol)]      when every block meets its tolerance;
    *   modify_linear_system(x)  the problem's own row modifications;
    *   linear solve K d = -R,   distribute(d);
@@ -92,6 +95,25 @@ namespace DuctileContact
     virtual ResidualEvaluation
     assemble_residual(const Vector &x) = 0;
 
+    /// Whether the next iteration may keep the linear system's matrix of
+    /// the last assemble_system() (a chord step, Newton/Tangent update):
+    /// false while the problem's own row modifications depend on the
+    /// iterate.
+    virtual bool
+    keeps_tangent() const
+    {
+      return false;
+    }
+    /// For a chord step (only where keeps_tangent()): right-hand side and
+    /// residual at @p x with its branches recorded, as assemble_system()
+    /// makes them, the matrix left as the last assemble_system() made it.
+    virtual ResidualEvaluation
+    assemble_right_hand_side(const Vector &x)
+    {
+      (void)x;
+      AssertThrow(false, dealii::ExcNotImplemented());
+      return {};
+    }
     /// Called when every block of the state @p x meets @p tolerances;
     /// false when the problem changes its equations there.
     virtual bool

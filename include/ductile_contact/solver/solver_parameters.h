@@ -52,6 +52,22 @@ namespace DuctileContact
     check() const;
   };
 
+  /// Newton/Tangent update.
+  enum class TangentUpdate
+  {
+    every_iteration,
+    chord
+  };
+
+  inline const NameTable<TangentUpdate> &
+  tangent_update_names()
+  {
+    static const NameTable<TangentUpdate> t{
+      {TangentUpdate::every_iteration, "every iteration"},
+      {TangentUpdate::chord, "chord after a quadratic step"}};
+    return t;
+  }
+
   /**
    * Subsection `Newton`: tolerances and globalisation of the Newton
    * iteration on the coupled residual.
@@ -65,6 +81,8 @@ namespace DuctileContact
     unsigned int max_line_search_steps = 6;
     /// Compare K delta with central differences of R along delta.
     bool check_tangent = false;
+    /// every iteration | chord after a quadratic step (see declare()).
+    TangentUpdate tangent_update = TangentUpdate::every_iteration;
 
     void
     declare(dealii::ParameterHandler &prm);
