@@ -8,7 +8,9 @@
 # double-precision factors (variant direct), hertz_sphere with GMRES-AMG
 # (variant amg, its default before session 35), and the scenes whose default is the linear
 # predictor since session 36 (sent_coarse) or 37 (two_bodies,
-# block_on_plate) with the constant one (variant constant).
+# block_on_plate) with the constant one (variant constant), and
+# block_on_plate with a tangent in every Newton iteration (variant newton,
+# its default before its chord steps of session 38).
 # Runs of earlier code are kept under another variant name (e.g.
 # runs/SCENE/2026-12-02) for a before/after.
 # report.py writes results.md: wall time, Newton and linear iterations, time
@@ -29,7 +31,7 @@ declare -A variants=(
   [box_compression]="default single"
   [necking_bar]="default single"
   [two_bodies]="default constant al single"
-  [block_on_plate]="default direct constant"
+  [block_on_plate]="default newton direct constant"
   [hertz_sphere]="default direct amg"
   [ironing]="default single"
   [ductile_notch]="default single"
@@ -41,6 +43,7 @@ declare -A settings=(
   [direct]="subsection Linear solver;  set Type = direct;  set Factorisation precision = double;end"
   [amg]="subsection Linear solver;  set Type = gmres-amg;end"
   [constant]="subsection Load stepping;  set Predictor = constant;end"
+  [newton]="subsection Newton;  set Tangent update = every iteration;end"
 )
 order=(box_compression necking_bar two_bodies block_on_plate hertz_sphere ironing ductile_notch sent_coarse)
 
