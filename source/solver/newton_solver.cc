@@ -364,6 +364,15 @@ namespace DuctileContact
         ResidualEvaluation trial;
         if (!line_search(problem, x, n, tol, pending, step_length, trial))
           {
+            if (chord)
+              {
+                // The kept tangent leads nowhere here: a full iteration
+                // from the same state before the step counts as failed.
+                monitor.out << "        chord step failed: a full iteration"
+                            << std::endl;
+                chord = false;
+                continue;
+              }
             report.failure =
               "line search found no admissible step" +
               (trial.admissible ? std::string() : ": " + trial.inadmissible);
