@@ -172,7 +172,7 @@ namespace
 
 
 
-  /// A = 1e6 (mass + stiffness) per displacement component, and the same
+  /// A = 1e6 (1e-4 mass + stiffness) per displacement component, and the same
   /// assembled from the absolute values of the cell matrices.
   void
   assemble(const Discretisation                &d,
