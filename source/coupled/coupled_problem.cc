@@ -293,7 +293,15 @@ namespace DuctileContact
   ResidualEvaluation
   CoupledProblem::assemble_system(const Vector &x)
   {
-    AssemblyTargets targets{&tangent, &newton_rhs, &residual, &force};
+    return assemble_recording(x, &tangent);
+  }
+
+
+
+  ResidualEvaluation
+  CoupledProblem::assemble_recording(const Vector &x, Matrix *matrix)
+  {
+    AssemblyTargets targets{matrix, &newton_rhs, &residual, &force};
     targets.branch_record = &branches;
     targets.branches      = Branches::record;
     last_info             = assemble(targets);
@@ -336,14 +344,9 @@ namespace DuctileContact
   ResidualEvaluation
   CoupledProblem::assemble_right_hand_side(const Vector &x)
   {
-    (void)x; // the state is u_ghosted, set by begin_iteration()
+    // Without the bound's rows, which would need the tangent.
     Assert(keeps_tangent(), ExcInternalError());
-    AssemblyTargets targets{nullptr, &newton_rhs, &residual, &force};
-    targets.branch_record = &branches;
-    targets.branches      = Branches::record;
-    last_info             = assemble(targets);
-    bound_applied         = false;
-    return evaluation(last_info);
+    return assemble_recording(x, nullptr);
   }
 
 

@@ -146,6 +146,12 @@ namespace DuctileContact
     AssemblyInfo
     assemble(const AssemblyTargets &targets);
 
+    /// -R and R (and the tangent into @p matrix unless null) at @p x with
+    /// the branches recorded, the bound's rows if engaged: assemble_system()
+    /// and, without the matrix, assemble_right_hand_side().
+    ResidualEvaluation
+    assemble_recording(const Vector &x, Matrix *matrix);
+
     /// Norms and scales of #residual at the state of @p info.
     ResidualEvaluation
     evaluation(const AssemblyInfo &info) const;
