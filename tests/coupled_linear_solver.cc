@@ -300,6 +300,17 @@ namespace
           << Testing::yes_no(its >= 2 && its <= 20) << std::endl;
       std::cout << "reuse: " << its << " iterations" << std::endl;
     }
+    // The same matrix again, and said so (a chord step): the solver skips
+    // its copy of the values and the check of the factors' pattern.
+    {
+      K.vmult(b, x_exact);
+      x = 0;
+      solver.solve(K, x, b, {}, true);
+      x -= x_exact;
+      out << "  direct on the matrix of the last solve: error < 1e-6: "
+          << Testing::yes_no(x.l2_norm() / x_exact.l2_norm() < 1e-6)
+          << std::endl;
+    }
     // A large change: the factors of the last matrix cannot bring GMRES to
     // the tolerance within the ~55 iterations left; it must give up within
     // 10 (ProjectedGmresControl) and factorise again.
@@ -322,6 +333,61 @@ namespace
     parameters.reuse_iterations = 0;
     solver.setup();
     check("direct after setup()", 0);
+
+    // A SolveAccuracy with weights of very different sizes per block (as
+    // Newton's tolerances of u, alpha and s are): a solve may stop once the
+    // weighted residual is below `enough`, here 1e-4 of the weighted
+    // right-hand side. GMRES on the factors of an earlier matrix (a few
+    // tenths gained per iteration, so the stop is decided by the norm it
+    // measures) must meet that bound with fewer iterations than to the
+    // relative tolerance (1e-10) on the same factors; GMRES-AMG meets it
+    // too.
+    {
+      const std::vector<double> weights{1., 1e3, 1e6};
+      const auto                weighted = [&](const auto &v) {
+        double sum = 0.;
+        for (unsigned int block = 0; block < Block::n_blocks; ++block)
+          sum += Utilities::fixed_power<2>(weights[block] *
+                                           v.block(block).l2_norm());
+        return std::sqrt(sum);
+      };
+      parameters.type             = LinearSolverType::direct;
+      parameters.direct_solver    = DirectSolver::mumps;
+      parameters.reuse_iterations = 60;
+      solver.setup();
+      assemble(d, d.hanging_node_constraints, 2., K);
+      K.vmult(b, x_exact);
+      x = 0;
+      solver.solve(K, x, b); // factorises
+      assemble(d, d.hanging_node_constraints, 2.1, K);
+      K.vmult(b, x_exact);
+      const SolveAccuracy accuracy{weights, 1e-4 * weighted(b)};
+      const auto          meets = [&](const unsigned int its) {
+        TrilinosWrappers::MPI::BlockVector r = b, k_x = b;
+        K.vmult(k_x, x);
+        r -= k_x;
+        const double ratio = weighted(r) / accuracy.enough;
+        std::cout << "accuracy: " << its << " iterations, weighted residual "
+                  << ratio << " of enough" << std::endl;
+        return ratio <= 1.;
+      };
+      x                               = 0;
+      const unsigned int its_relative = solver.solve(K, x, b);
+      x                               = 0;
+      const unsigned int its          = solver.solve(K, x, b, accuracy);
+      out << "  GMRES on old factors to a weighted accuracy: met: "
+          << Testing::yes_no(meets(its))
+          << ", fewer iterations than to the relative tolerance: "
+          << Testing::yes_no(its < its_relative) << std::endl;
+      std::cout << "relative tolerance: " << its_relative << " iterations"
+                << std::endl;
+      parameters.type             = LinearSolverType::gmres_amg;
+      parameters.reuse_iterations = 0;
+      x                           = 0;
+      const unsigned int its_amg  = solver.solve(K, x, b, accuracy);
+      out << "  gmres-amg to a weighted accuracy: met: "
+          << Testing::yes_no(meets(its_amg)) << std::endl;
+    }
 
     // Whole blocks frozen: rows with a diagonal entry only.
     assemble(d, frozen_constraints(d, {Block::phase_field}), 1., K);

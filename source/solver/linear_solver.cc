@@ -99,16 +99,39 @@ namespace DuctileContact
   unsigned int
   LinearSolver::solve(const TrilinosWrappers::BlockSparseMatrix &K,
                       TrilinosWrappers::MPI::BlockVector        &x,
-                      const TrilinosWrappers::MPI::BlockVector  &b)
+                      const TrilinosWrappers::MPI::BlockVector  &b,
+                      const SolveAccuracy                       &accuracy,
+                      const bool                                 same_matrix)
   {
+    Assert(accuracy.block_weights.empty() ||
+             accuracy.block_weights.size() == b.n_blocks(),
+           ExcDimensionMismatch(accuracy.block_weights.size(), b.n_blocks()));
+    for (unsigned int i = 0; i < accuracy.block_weights.size(); ++i)
+      Assert(b.block(i).size() == 0 || accuracy.block_weights[i] > 0.,
+             ExcMessage("every block with DoFs needs a positive weight"));
     if (discretisation.dofs_per_block[Block::hardening] == 0 &&
         discretisation.dofs_per_block[Block::phase_field] == 0)
-      return solve_displacement(K, x, b);
+      return solve_displacement(K, x, b, accuracy, same_matrix);
     if (parameters.type == LinearSolverType::direct)
-      return solve_coupled_direct(K, x, b);
+      return solve_coupled_direct(K, x, b, accuracy, same_matrix);
     // cg-amg too: the coupled tangent is not symmetric (documented with the
     // parameter).
-    return solve_coupled_iterative(K, x, b);
+    return solve_coupled_iterative(K, x, b, accuracy);
+  }
+
+
+
+  double
+  LinearSolver::plain_tolerance(const double         rhs_norm,
+                                const SolveAccuracy &accuracy) const
+  {
+    double tolerance = parameters.relative_tolerance * rhs_norm;
+    if (!accuracy.block_weights.empty())
+      tolerance = std::max(tolerance,
+                           accuracy.enough /
+                             *std::max_element(accuracy.block_weights.begin(),
+                                               accuracy.block_weights.end()));
+    return tolerance;
   }
 
 
@@ -137,20 +160,28 @@ namespace DuctileContact
   unsigned int
   LinearSolver::solve_displacement(const TrilinosWrappers::BlockSparseMatrix &K,
                                    TrilinosWrappers::MPI::BlockVector        &x,
-                                   const TrilinosWrappers::MPI::BlockVector  &b)
+                                   const TrilinosWrappers::MPI::BlockVector  &b,
+                                   const SolveAccuracy &accuracy,
+                                   const bool           same_matrix)
   {
     const auto &A  = K.block(Block::displacement, Block::displacement);
     auto       &xu = x.block(Block::displacement);
     const auto &bu = b.block(Block::displacement);
 
     if (parameters.type == LinearSolverType::direct)
-      return solve_direct(A, xu, bu);
+      {
+        if (accuracy.block_weights.empty())
+          return solve_direct(A, xu, bu, nullptr, 0., same_matrix);
+        TrilinosWrappers::MPI::Vector weights(bu);
+        weights = accuracy.block_weights[Block::displacement];
+        return solve_direct(A, xu, bu, &weights, accuracy.enough, same_matrix);
+      }
 
     TrilinosWrappers::PreconditionAMG amg;
     initialize_displacement_amg(A, amg);
 
     SolverControl control(parameters.max_iterations,
-                          parameters.relative_tolerance * bu.l2_norm());
+                          plain_tolerance(bu.l2_norm(), accuracy));
     if (parameters.type == LinearSolverType::cg_amg)
       {
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
@@ -217,7 +248,10 @@ namespace DuctileContact
   unsigned int
   LinearSolver::solve_direct(const TrilinosWrappers::SparseMatrix &A,
                              TrilinosWrappers::MPI::Vector        &x,
-                             const TrilinosWrappers::MPI::Vector  &b)
+                             const TrilinosWrappers::MPI::Vector  &b,
+                             const TrilinosWrappers::MPI::Vector  *weights,
+                             const double                          enough,
+                             const bool                            same_matrix)
   {
     if (parameters.direct_solver == DirectSolver::mumps)
       {
@@ -239,13 +273,14 @@ namespace DuctileContact
         if (reuse_iterations_left > 0 &&
             reuse_iterations_left >= last_reuse_iterations &&
             skipped_reuses >= reuses_to_skip &&
-            mumps->has_factors_for(A.trilinos_matrix()))
+            (same_matrix ? mumps->has_factors()
+                         : mumps->has_factors_for(A.trilinos_matrix())))
           {
             const bool fresh =
               reuse_iterations_left == parameters.reuse_iterations;
             const unsigned int solves_before = mumps->statistics().solves;
-            const unsigned int n =
-              solve_with_old_factors(A, x, b, reuse_iterations_left, true);
+            const unsigned int n             = solve_with_old_factors(
+              A, x, b, weights, enough, reuse_iterations_left, true);
             if (n == 0)
               {
                 ++failed_reuses;
@@ -278,8 +313,15 @@ namespace DuctileContact
           }
         // Single-precision factors of this matrix: GMRES to the tolerance,
         // within the reuse budget (one restart cycle if reuse is off).
-        const unsigned int n = solve_with_old_factors(
-          A, x, b, std::max(parameters.reuse_iterations, gmres_restart), false);
+        const unsigned int n =
+          solve_with_old_factors(A,
+                                 x,
+                                 b,
+                                 weights,
+                                 enough,
+                                 std::max(parameters.reuse_iterations,
+                                          gmres_restart),
+                                 false);
         if (n > 0)
           {
             reuse_iterations_left -= std::min(n, reuse_iterations_left);
@@ -365,27 +407,69 @@ namespace DuctileContact
 
 
   unsigned int
-  LinearSolver::solve_with_old_factors(const TrilinosWrappers::SparseMatrix &A,
-                                       TrilinosWrappers::MPI::Vector        &x,
-                                       const TrilinosWrappers::MPI::Vector  &b,
-                                       const unsigned int max_iterations,
-                                       const bool         give_up_early)
+  LinearSolver::solve_with_old_factors(
+    const TrilinosWrappers::SparseMatrix &A,
+    TrilinosWrappers::MPI::Vector        &x,
+    const TrilinosWrappers::MPI::Vector  &b,
+    const TrilinosWrappers::MPI::Vector  *weights,
+    const double                          enough,
+    const unsigned int                    max_iterations,
+    const bool                            give_up_early)
   {
-    // The factors of an earlier matrix as a right preconditioner: GMRES then
-    // tests the true residual ||b - A x||.
-    struct OldFactors
+    // The factors of an earlier matrix P as a right preconditioner of the
+    // row-weighted system W A x = W b (W the diagonal of the weights, the
+    // identity without them), as P W^-1: GMRES then tests the true
+    // residual ||W (b - A x)||, and x is the solution of A x = b.
+    struct WeightedMatrix
     {
-      MumpsSolver *mumps;
+      const TrilinosWrappers::SparseMatrix &A;
+      const TrilinosWrappers::MPI::Vector  *weights;
       void
       vmult(TrilinosWrappers::MPI::Vector       &dst,
             const TrilinosWrappers::MPI::Vector &src) const
       {
-        mumps->solve(dst.trilinos_vector(), src.trilinos_vector());
+        A.vmult(dst, src);
+        if (weights)
+          dst.scale(*weights);
       }
     };
-    ProjectedGmresControl control(max_iterations,
-                                  parameters.relative_tolerance * b.l2_norm(),
-                                  give_up_early);
+    struct OldFactors
+    {
+      MumpsSolver                          *mumps;
+      const TrilinosWrappers::MPI::Vector  *inverse_weights;
+      mutable TrilinosWrappers::MPI::Vector unweighted;
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        if (!inverse_weights)
+          {
+            mumps->solve(dst.trilinos_vector(), src.trilinos_vector());
+            return;
+          }
+        unweighted = src;
+        unweighted.scale(*inverse_weights);
+        mumps->solve(dst.trilinos_vector(), unweighted.trilinos_vector());
+      }
+    };
+    TrilinosWrappers::MPI::Vector weighted_b, inverse_weights;
+    if (weights)
+      {
+        weighted_b = b;
+        weighted_b.scale(*weights);
+        inverse_weights = *weights;
+        for (auto &w : inverse_weights)
+          w = 1. / w;
+      }
+    const TrilinosWrappers::MPI::Vector &rhs = weights ? weighted_b : b;
+    ProjectedGmresControl                control(
+      max_iterations,
+      std::max(parameters.relative_tolerance * rhs.l2_norm(), enough),
+      give_up_early);
+    const WeightedMatrix matrix{A, weights};
+    const OldFactors     factors{mumps.get(),
+                             weights ? &inverse_weights : nullptr,
+                                 {}};
     x = 0.;
     try
       {
@@ -395,7 +479,7 @@ namespace DuctileContact
               control,
               SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
                 gmres_restart, true));
-            gmres.solve(A, x, b, OldFactors{mumps.get()});
+            gmres.solve(matrix, x, rhs, factors);
           }
         else
           {
@@ -407,7 +491,7 @@ namespace DuctileContact
               control,
               SolverFGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
                 gmres_restart));
-            fgmres.solve(A, x, b, OldFactors{mumps.get()});
+            fgmres.solve(matrix, x, rhs, factors);
           }
       }
     catch (const SolverControl::NoConvergence &)
@@ -558,7 +642,9 @@ namespace DuctileContact
   LinearSolver::solve_coupled_direct(
     const TrilinosWrappers::BlockSparseMatrix &K,
     TrilinosWrappers::MPI::BlockVector        &x,
-    const TrilinosWrappers::MPI::BlockVector  &b)
+    const TrilinosWrappers::MPI::BlockVector  &b,
+    const SolveAccuracy                       &accuracy,
+    const bool                                 same_matrix)
   {
     const unsigned int n_blocks = Block::n_blocks;
 
@@ -573,16 +659,20 @@ namespace DuctileContact
         same = (monolithic->source[i] == &A &&
                 monolithic->source_entries[i] == A.NumMyNonzeros());
       }
-    if (Utilities::MPI::min(same ? 1 : 0,
-                            discretisation.dof_handler.get_communicator()) == 0)
+    same =
+      Utilities::MPI::min(same ? 1 : 0,
+                          discretisation.dof_handler.get_communicator()) == 1;
+    if (!same)
       make_monolithic_pattern(K);
     Monolithic &m = *monolithic;
 
     // Values: each block entry into its place in the flat row (a view of
     // the Epetra storage; the pattern is fixed, so no compress is needed).
-    m.matrix                     = 0.;
-    const Epetra_CrsMatrix &flat = m.matrix.trilinos_matrix();
-    for (unsigned int I = 0; I < n_blocks; ++I)
+    // Every entry of the flat pattern comes from one block entry. Not again
+    // for the matrix of the last solve.
+    const Epetra_CrsMatrix &flat        = m.matrix.trilinos_matrix();
+    const bool              copy_values = !(same_matrix && same);
+    for (unsigned int I = 0; copy_values && I < n_blocks; ++I)
       for (unsigned int J = 0; J < n_blocks; ++J)
         {
           const Epetra_CrsMatrix &A = K.block(I, J).trilinos_matrix();
@@ -612,7 +702,21 @@ namespace DuctileContact
       }
     m.x = 0.;
 
-    const unsigned int n_solves = solve_direct(m.matrix, m.x, m.b);
+    const bool weighted = !accuracy.block_weights.empty();
+    if (weighted)
+      {
+        m.weights.reinit(m.b, true);
+        double *flat_w = m.weights.trilinos_vector()[0];
+        for (unsigned int I = 0; I < n_blocks; ++I)
+          for (const int r : m.row[I])
+            flat_w[r] = accuracy.block_weights[I];
+      }
+    const unsigned int n_solves = solve_direct(m.matrix,
+                                               m.x,
+                                               m.b,
+                                               weighted ? &m.weights : nullptr,
+                                               accuracy.enough,
+                                               same_matrix && same);
 
     const double *flat_x = m.x.trilinos_vector()[0];
     for (unsigned int I = 0; I < n_blocks; ++I)
@@ -632,7 +736,8 @@ namespace DuctileContact
   LinearSolver::solve_coupled_iterative(
     const TrilinosWrappers::BlockSparseMatrix &K,
     TrilinosWrappers::MPI::BlockVector        &x,
-    const TrilinosWrappers::MPI::BlockVector  &b)
+    const TrilinosWrappers::MPI::BlockVector  &b,
+    const SolveAccuracy                       &accuracy)
   {
     using Inverse = BlockTriangularPreconditioner::BlockInverse;
     std::vector<Inverse> inverses(Block::n_blocks);
@@ -703,7 +808,7 @@ namespace DuctileContact
     // Right preconditioning: the stopping test is on the true residual
     // ||b - K x||, as the relative tolerance promises.
     SolverControl control(parameters.max_iterations,
-                          parameters.relative_tolerance * b.l2_norm());
+                          plain_tolerance(b.l2_norm(), accuracy));
     SolverGMRES<TrilinosWrappers::MPI::BlockVector> gmres(
       control,
       SolverGMRES<TrilinosWrappers::MPI::BlockVector>::AdditionalData(100,

@@ -215,6 +215,30 @@ namespace DuctileContact
 
 
 
+  SolveAccuracy
+  NewtonSolver::linear_accuracy(const NonlinearProblem &problem,
+                                const Norms            &tolerances) const
+  {
+    SolveAccuracy accuracy;
+    if (parameters.linear_accuracy != LinearAccuracy::newton_tolerances)
+      return accuracy;
+    // The residual in units of the tolerances, as the merit measures it; a
+    // block with DoFs but no tolerance leaves the relative one alone.
+    const Vector &rhs = problem.system_rhs();
+    accuracy.block_weights.resize(tolerances.size(), 0.);
+    for (unsigned int b = 0; b < tolerances.size(); ++b)
+      if (rhs.block(b).size() > 0)
+        {
+          if (!(tolerances[b] > 0.))
+            return {};
+          accuracy.block_weights[b] = 1. / tolerances[b];
+        }
+    accuracy.enough = linear_fraction_of_tolerance;
+    return accuracy;
+  }
+
+
+
   bool
   NewtonSolver::line_search(NonlinearProblem   &problem,
                             Vector             &x,
@@ -280,6 +304,11 @@ namespace DuctileContact
     bool branches_changed = false;
     // Whether this iteration keeps the last tangent (Tangent update).
     bool chord = false;
+    // Whether the last update was a full step that cut the merit 10-fold,
+    // or there was none yet: Newton's fast phase, where the linear solves
+    // may stop early (Linear solve accuracy); in a damped or slow phase
+    // they go to the relative tolerance.
+    bool fast = true;
     for (unsigned int it = 0;; ++it)
       {
         const bool         pending = problem.begin_iteration(x);
@@ -332,7 +361,10 @@ namespace DuctileContact
             delta    = 0;
             n_linear = linear_solver.solve(problem.system_matrix(),
                                            delta,
-                                           problem.system_rhs());
+                                           problem.system_rhs(),
+                                           fast ? linear_accuracy(problem, tol)
+                                                : SolveAccuracy(),
+                                           chord);
           }
         catch (const SolverControl::NoConvergence &e)
           {
@@ -388,6 +420,8 @@ namespace DuctileContact
         print(problem, it + 1, trial, still_pending);
         report.iterations = it + 1;
         branches_changed  = trial.branch_changes > 0;
+        fast              = !still_pending && step_length == 1. &&
+               10. * merit(trial.norms, tol) <= r;
         // After a full Newton step that reduced the merit 100-fold, its
         // tangent serves the next iteration too, and the one after while
         // each such chord step reduces the merit 10-fold.

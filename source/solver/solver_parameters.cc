@@ -170,6 +170,31 @@ namespace DuctileContact
       "loading points that switch on during the first update "
       "(benchmarks/performance). Not while the phase-field bound s >= s_n "
       "holds DoFs (its rows follow the iterate).");
+    add_option(
+      prm,
+      "Linear solve accuracy",
+      linear_accuracy,
+      linear_accuracy_names(),
+      "When the iterative linear solves of a Newton iteration stop (GMRES on "
+      "the direct solver's factors, GMRES or CG with AMG). 'relative "
+      "tolerance': when the residual norm of the linear system is below "
+      "Linear solver/Relative tolerance times that of its right-hand side. "
+      "'newton tolerances': in Newton's fast phase (the first iteration of a "
+      "solve, and after a full update that cut the residual in units of the "
+      "tolerances 10-fold) also as soon as the linear residual r is far below "
+      "Newton's tolerances, sqrt(sum_b (|r_b| / tol_b)^2) <= 0.1 over the "
+      "blocks b = u, alpha, s (GMRES on factors measures its residual in that "
+      "norm; the AMG solvers, which see the plain norm, stop at 0.1 min_b "
+      "tol_b): the update's own error then adds at most a tenth of the "
+      "tolerance to the next residual. After a damped or slow update the "
+      "solves go to the relative tolerance: near a crack's growth the "
+      "direction matters beyond its residual (prm/sent_coarse.prm stalled with "
+      "the early stop in every iteration). Saves the GMRES iterations of late "
+      "Newton iterations and chord steps, whose right-hand side is already "
+      "near the tolerances (benchmarks/performance); the converged state "
+      "meets the same tolerances. Solves with exact factors are not changed. "
+      "The observed order of convergence (statistics column newton_rate) "
+      "then measures the linear solves' stop as well.");
     prm.leave_subsection();
   }
 

@@ -21,6 +21,25 @@
 namespace DuctileContact
 {
   /**
+   * How accurate a solve needs to be for its caller, besides `Relative
+   * tolerance`: with weights w_b per block b of the coupled vector, an
+   * iterative solve may also stop once its residual r = b - K x meets
+   *
+   *   sqrt(sum_b (w_b |r_b|)^2) <= enough.
+   *
+   * GMRES on the direct solver's factors then measures its residual in
+   * that weighted norm (the relative tolerance too); the AMG solvers,
+   * which see the plain norm, stop at |r| <= enough / max_b w_b. Empty
+   * weights: the relative tolerance alone. Every block with DoFs needs a
+   * positive weight.
+   */
+  struct SolveAccuracy
+  {
+    std::vector<double> block_weights;
+    double              enough = 0.;
+  };
+
+  /**
    * Solves the Newton system K delta = b.
    *
    * Without alpha and s unknowns (both blocks empty), on the displacement
@@ -57,10 +76,15 @@ namespace DuctileContact
     setup();
 
     /// Returns the number of iterations (1 for the direct solver).
+    /// @p same_matrix: K is the matrix of the last solve, values unchanged
+    /// (a chord step): its copy for the direct solver and the check of the
+    /// factors' pattern are skipped.
     unsigned int
     solve(const dealii::TrilinosWrappers::BlockSparseMatrix &K,
           dealii::TrilinosWrappers::MPI::BlockVector        &x,
-          const dealii::TrilinosWrappers::MPI::BlockVector  &b);
+          const dealii::TrilinosWrappers::MPI::BlockVector  &b,
+          const SolveAccuracy                               &accuracy = {},
+          bool same_matrix                                            = false);
 
     /// One line on the direct solver's work so far (analyses,
     /// factorisations, solves and their times), if it kept any.
@@ -82,15 +106,23 @@ namespace DuctileContact
     unsigned int
     solve_displacement(const dealii::TrilinosWrappers::BlockSparseMatrix &K,
                        dealii::TrilinosWrappers::MPI::BlockVector        &x,
-                       const dealii::TrilinosWrappers::MPI::BlockVector  &b);
+                       const dealii::TrilinosWrappers::MPI::BlockVector  &b,
+                       const SolveAccuracy &accuracy,
+                       bool                 same_matrix);
 
     /// x = A^{-1} b by the Direct solver (MUMPS keeps its analysis, and
     /// with `Factorisation reuse` its factors while they serve); returns the
-    /// number of applications of the factors.
+    /// number of applications of the factors. With @p weights (one per
+    /// row of A), GMRES on the factors stops as SolveAccuracy says; with
+    /// @p same_matrix (A that of the last solve) the factors' pattern is
+    /// not checked.
     unsigned int
     solve_direct(const dealii::TrilinosWrappers::SparseMatrix &A,
                  dealii::TrilinosWrappers::MPI::Vector        &x,
-                 const dealii::TrilinosWrappers::MPI::Vector  &b);
+                 const dealii::TrilinosWrappers::MPI::Vector  &b,
+                 const dealii::TrilinosWrappers::MPI::Vector  *weights,
+                 double                                        enough,
+                 bool                                          same_matrix);
 
     /// GMRES preconditioned by the last MUMPS factors; 0 if it did not
     /// reach the tolerance within @p max_iterations, or, with
@@ -101,22 +133,32 @@ namespace DuctileContact
     solve_with_old_factors(const dealii::TrilinosWrappers::SparseMatrix &A,
                            dealii::TrilinosWrappers::MPI::Vector        &x,
                            const dealii::TrilinosWrappers::MPI::Vector  &b,
+                           const dealii::TrilinosWrappers::MPI::Vector *weights,
+                           double                                       enough,
                            unsigned int max_iterations,
                            bool         give_up_early);
 
-    /// The direct solver on the monolithic copy of the coupled system.
+    /// The direct solver on the monolithic copy of the coupled system
+    /// (values copied unless @p same_matrix).
     unsigned int
     solve_coupled_direct(const dealii::TrilinosWrappers::BlockSparseMatrix &K,
                          dealii::TrilinosWrappers::MPI::BlockVector        &x,
-                         const dealii::TrilinosWrappers::MPI::BlockVector  &b);
+                         const dealii::TrilinosWrappers::MPI::BlockVector  &b,
+                         const SolveAccuracy &accuracy,
+                         bool                 same_matrix);
 
     /// GMRES with the block lower-triangular preconditioner.
     unsigned int
     solve_coupled_iterative(
       const dealii::TrilinosWrappers::BlockSparseMatrix &K,
       dealii::TrilinosWrappers::MPI::BlockVector        &x,
-      const dealii::TrilinosWrappers::MPI::BlockVector  &b);
+      const dealii::TrilinosWrappers::MPI::BlockVector  &b,
+      const SolveAccuracy                               &accuracy);
 
+    /// Stopping tolerance of the solvers that see the plain residual norm:
+    /// the relative one, or the SolveAccuracy's bound if looser.
+    double
+    plain_tolerance(double rhs_norm, const SolveAccuracy &accuracy) const;
     /// ML AMG of the displacement block with the rigid-body modes.
     void
     initialize_displacement_amg(
@@ -143,6 +185,8 @@ namespace DuctileContact
     {
       dealii::TrilinosWrappers::SparseMatrix matrix;
       dealii::TrilinosWrappers::MPI::Vector  x, b;
+      /// Row weights of an SolveAccuracy (w_b on the rows of block b).
+      dealii::TrilinosWrappers::MPI::Vector weights;
 
       /// The block matrices the pattern was built from, and their number of
       /// local entries: a tangent re-created with another pattern is noticed.

@@ -62,6 +62,13 @@ namespace DuctileContact
     bool
     has_factors_for(const Epetra_CrsMatrix &A) const;
 
+    /// Whether factors exist (of the matrix factorised last).
+    bool
+    has_factors() const
+    {
+      return factorised;
+    }
+
     /// x = A^{-1} b with the last factorisation; @p b and @p x have the row
     /// map of A.
     void

@@ -105,6 +105,17 @@ namespace DuctileContact
     Norms
     tolerances(const ResidualEvaluation &evaluation) const;
 
+    /// Newton/Linear solve accuracy: with `newton tolerances`, the linear
+    /// solve may stop once its residual, in units of @p tolerances (the
+    /// merit's norm), is below #linear_fraction_of_tolerance.
+    SolveAccuracy
+    linear_accuracy(const NonlinearProblem &problem,
+                    const Norms            &tolerances) const;
+
+    /// The update's own error then adds at most this to the merit of the
+    /// next iterate, whose convergence test asks for 1 per block.
+    static constexpr double linear_fraction_of_tolerance = 0.1;
+
     static double
     merit(const Norms &norms, const Norms &tolerances);
 

@@ -68,6 +68,22 @@ namespace DuctileContact
     return t;
   }
 
+  /// Newton/Linear solve accuracy.
+  enum class LinearAccuracy
+  {
+    relative_tolerance,
+    newton_tolerances
+  };
+
+  inline const NameTable<LinearAccuracy> &
+  linear_accuracy_names()
+  {
+    static const NameTable<LinearAccuracy> t{
+      {LinearAccuracy::relative_tolerance, "relative tolerance"},
+      {LinearAccuracy::newton_tolerances, "newton tolerances"}};
+    return t;
+  }
+
   /**
    * Subsection `Newton`: tolerances and globalisation of the Newton
    * iteration on the coupled residual.
@@ -83,6 +99,8 @@ namespace DuctileContact
     bool check_tangent = false;
     /// every iteration | chord after a quadratic step (see declare()).
     TangentUpdate tangent_update = TangentUpdate::every_iteration;
+    /// relative tolerance | newton tolerances (see declare()).
+    LinearAccuracy linear_accuracy = LinearAccuracy::relative_tolerance;
 
     void
     declare(dealii::ParameterHandler &prm);
