@@ -10,7 +10,9 @@
 # predictor since session 36 (sent_coarse) or 37 (two_bodies,
 # block_on_plate) with the constant one (variant constant), and
 # block_on_plate with a tangent in every Newton iteration (variant newton,
-# its default before its chord steps of session 38).
+# its default before its chord steps of session 38), and block_on_plate and
+# ductile_notch with linear solves to their relative tolerance (variant
+# relative, their default before session 39).
 # Runs of earlier code are kept under another variant name (e.g.
 # runs/SCENE/2026-12-02) for a before/after.
 # report.py writes results.md: wall time, Newton and linear iterations, time
@@ -31,10 +33,10 @@ declare -A variants=(
   [box_compression]="default single"
   [necking_bar]="default single"
   [two_bodies]="default constant al single"
-  [block_on_plate]="default newton direct constant"
+  [block_on_plate]="default relative newton direct constant"
   [hertz_sphere]="default direct amg"
   [ironing]="default single"
-  [ductile_notch]="default single"
+  [ductile_notch]="default relative single"
   [sent_coarse]="default constant single"
 )
 declare -A settings=(
@@ -44,6 +46,7 @@ declare -A settings=(
   [amg]="subsection Linear solver;  set Type = gmres-amg;end"
   [constant]="subsection Load stepping;  set Predictor = constant;end"
   [newton]="subsection Newton;  set Tangent update = every iteration;end"
+  [relative]="subsection Newton;  set Linear solve accuracy = relative tolerance;end"
 )
 order=(box_compression necking_bar two_bodies block_on_plate hertz_sphere ironing ductile_notch sent_coarse)
 
