@@ -306,8 +306,11 @@ namespace DuctileContact
     bool chord = false;
     // Whether the last update was a full step that cut the merit 10-fold,
     // or there was none yet: Newton's fast phase, where the linear solves
-    // may stop early (Linear solve accuracy); in a damped or slow phase
-    // they go to the relative tolerance.
+    // may stop early (Linear solve accuracy); in a damped or slow phase,
+    // and while the problem's rows follow the iterate (keeps_tangent()
+    // false: the phase-field bound's active set), they go to the relative
+    // tolerance. prm/sent_coarse.prm's crack phase stalled without either
+    // rule (benchmarks/performance, session 39).
     bool fast = true;
     for (unsigned int it = 0;; ++it)
       {
@@ -362,8 +365,9 @@ namespace DuctileContact
             n_linear = linear_solver.solve(problem.system_matrix(),
                                            delta,
                                            problem.system_rhs(),
-                                           fast ? linear_accuracy(problem, tol)
-                                                : SolveAccuracy(),
+                                           fast && problem.keeps_tangent()
+                                             ? linear_accuracy(problem, tol)
+                                             : SolveAccuracy(),
                                            chord);
           }
         catch (const SolverControl::NoConvergence &e)
