@@ -37,7 +37,7 @@ declare -A variants=(
   [hertz_sphere]="default direct amg"
   [ironing]="default single"
   [ductile_notch]="default relative single"
-  [sent_coarse]="default constant single"
+  [sent_coarse]="default relative constant single"
 )
 declare -A settings=(
   [al]="subsection Contact pair 1;  set Enforcement = augmented Lagrangian;end"
