@@ -185,7 +185,7 @@ namespace DuctileContact
     {
       dealii::TrilinosWrappers::SparseMatrix matrix;
       dealii::TrilinosWrappers::MPI::Vector  x, b;
-      /// Row weights of an SolveAccuracy (w_b on the rows of block b).
+      /// Row weights of a SolveAccuracy (w_b on the rows of block b).
       dealii::TrilinosWrappers::MPI::Vector weights;
 
       /// The block matrices the pattern was built from, and their number of
