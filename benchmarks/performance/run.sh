@@ -10,9 +10,10 @@
 # predictor since session 36 (sent_coarse) or 37 (two_bodies,
 # block_on_plate) with the constant one (variant constant), and
 # block_on_plate with a tangent in every Newton iteration (variant newton,
-# its default before its chord steps of session 38), and block_on_plate and
-# ductile_notch with linear solves to their relative tolerance (variant
-# relative, their default before session 39).
+# its default before its chord steps of session 38), and the scenes that
+# stop their linear solves at Newton's tolerances (block_on_plate,
+# ductile_notch, sent_coarse, two_bodies, ironing) with solves to their
+# relative tolerance (variant relative, their default before session 39).
 # Runs of earlier code are kept under another variant name (e.g.
 # runs/SCENE/2026-12-02) for a before/after.
 # report.py writes results.md: wall time, Newton and linear iterations, time
@@ -32,10 +33,10 @@ require_build
 declare -A variants=(
   [box_compression]="default single"
   [necking_bar]="default single"
-  [two_bodies]="default constant al single"
+  [two_bodies]="default relative constant al single"
   [block_on_plate]="default relative newton direct constant"
   [hertz_sphere]="default direct amg"
-  [ironing]="default single"
+  [ironing]="default relative single"
   [ductile_notch]="default relative single"
   [sent_coarse]="default relative constant single"
 )
