@@ -168,14 +168,17 @@ namespace DuctileContact
     auto       &xu = x.block(Block::displacement);
     const auto &bu = b.block(Block::displacement);
 
+    // One block, one weight: the weighted bound is a plain one.
     if (parameters.type == LinearSolverType::direct)
-      {
-        if (accuracy.block_weights.empty())
-          return solve_direct(A, xu, bu, nullptr, 0., same_matrix);
-        TrilinosWrappers::MPI::Vector weights(bu);
-        weights = accuracy.block_weights[Block::displacement];
-        return solve_direct(A, xu, bu, &weights, accuracy.enough, same_matrix);
-      }
+      return solve_direct(A,
+                          xu,
+                          bu,
+                          nullptr,
+                          accuracy.block_weights.empty()
+                            ? 0.
+                            : accuracy.enough /
+                                accuracy.block_weights[Block::displacement],
+                          same_matrix);
 
     TrilinosWrappers::PreconditionAMG amg;
     initialize_displacement_amg(A, amg);

@@ -422,16 +422,16 @@ namespace DuctileContact
 
         const bool still_pending = pending && step_length < 1.;
         print(problem, it + 1, trial, still_pending);
-        report.iterations = it + 1;
-        branches_changed  = trial.branch_changes > 0;
-        fast              = !still_pending && step_length == 1. &&
-               10. * merit(trial.norms, tol) <= r;
+        report.iterations        = it + 1;
+        branches_changed         = trial.branch_changes > 0;
+        const double trial_merit = merit(trial.norms, tol);
+        const bool   full_step   = !still_pending && step_length == 1.;
+        fast                     = full_step && 10. * trial_merit <= r;
         // After a full Newton step that reduced the merit 100-fold, its
         // tangent serves the next iteration too, and the one after while
         // each such chord step reduces the merit 10-fold.
         chord = parameters.tangent_update == TangentUpdate::chord &&
-                !still_pending && step_length == 1. &&
-                (chord ? 10. : 100.) * merit(trial.norms, tol) <= r &&
+                full_step && (chord ? 10. : 100.) * trial_merit <= r &&
                 problem.keeps_tangent();
         if (!still_pending && !branches_changed &&
             converged(problem, x, trial, report))

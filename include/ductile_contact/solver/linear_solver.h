@@ -112,10 +112,11 @@ namespace DuctileContact
 
     /// x = A^{-1} b by the Direct solver (MUMPS keeps its analysis, and
     /// with `Factorisation reuse` its factors while they serve); returns the
-    /// number of applications of the factors. With @p weights (one per
-    /// row of A), GMRES on the factors stops as SolveAccuracy says; with
-    /// @p same_matrix (A that of the last solve) the factors' pattern is
-    /// not checked.
+    /// number of applications of the factors. GMRES on the factors may
+    /// also stop once its residual, weighted row by row with @p weights
+    /// (plain without them), is below @p enough (as SolveAccuracy says);
+    /// with @p same_matrix (A that of the last solve) the factors' pattern
+    /// is not checked.
     unsigned int
     solve_direct(const dealii::TrilinosWrappers::SparseMatrix &A,
                  dealii::TrilinosWrappers::MPI::Vector        &x,
