@@ -59,6 +59,14 @@ namespace DuctileContact
       for (auto &l : local)
         l.clear();
       in_block.resize(n);
+      // Rows without an entry are skipped (contact's local matrices are
+      // mostly such rows).
+      thread_local std::vector<bool> zero_row;
+      zero_row.resize(n);
+      for (unsigned int r = 0; r < n; ++r)
+        zero_row[r] = std::all_of(&matrix(r, 0),
+                                  &matrix(r, 0) + n,
+                                  [](const double v) { return v == 0.; });
       for (unsigned int k = 0; k < n; ++k)
         {
           const auto [b, i] = blocks.global_to_local(indices[k]);
@@ -85,6 +93,8 @@ namespace DuctileContact
             std::sort(columns.begin(), columns.end());
             for (const unsigned int r : local[I])
               {
+                if (zero_row[r])
+                  continue;
                 const int row = A.LRID(in_block[r]);
                 if (row < 0)
                   {

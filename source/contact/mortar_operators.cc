@@ -161,6 +161,13 @@ namespace DuctileContact
 
 
 
+  struct MortarFace::BasisDerivatives
+  {
+    Matrix9<ContactAD> a;
+  };
+
+
+
   MortarFace::MortarFace(const Quad9 &slave, const bool dual)
       : slave(slave)
       , dual(dual)
@@ -187,8 +194,14 @@ namespace DuctileContact
           m[i][c] =
             ContactAD(face_pair_coordinates, 27 + 3 * i + c, master.x[i][c]);
         }
+    if (!basis_derivatives)
+      {
+        auto b            = std::make_shared<BasisDerivatives>();
+        b->a              = basis_coefficients(s, dual);
+        basis_derivatives = b;
+      }
     Matrix9<ContactAD> D, M;
-    if (!integrate_pair(s, m, basis_coefficients(s, dual), D, M))
+    if (!integrate_pair(s, m, basis_derivatives->a, D, M))
       return false;
     for (unsigned int i = 0; i < 9; ++i)
       for (unsigned int k = 0; k < 9; ++k)

@@ -3,6 +3,7 @@
 #include <ductile_contact/contact/quad9.h>
 
 #include <array>
+#include <memory>
 
 namespace DuctileContact
 {
@@ -38,7 +39,8 @@ namespace DuctileContact
    * per pair instead of at every integration point. With derivatives the
    * whole computation (basis coefficients included, they depend on the
    * slave face's shape) runs in ContactAD: that is the consistent
-   * linearisation of D and M (contact_problem.h).
+   * linearisation of D and M (contact_problem.h). The coefficients in
+   * ContactAD are made once per MortarFace, for all its master faces.
    */
   class MortarFace
   {
@@ -53,8 +55,14 @@ namespace DuctileContact
               const bool         derivatives) const;
 
   private:
+    /// The basis coefficients a_ik with their derivatives (ContactAD).
+    struct BasisDerivatives;
+
     Quad9                                slave;
     bool                                 dual;
     std::array<std::array<double, 9>, 9> coefficients;
+    /// Made by the first integrate() with derivatives and kept for the
+    /// face's other pairs: they depend on the slave face alone.
+    mutable std::shared_ptr<const BasisDerivatives> basis_derivatives;
   };
 } // namespace DuctileContact
