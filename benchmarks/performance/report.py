@@ -62,6 +62,7 @@ quantities = {
 }
 names = {"2026-12-02": "defaults of 2026-12-02 (2a1bd1b)",
          "before-give-up": "defaults before GMRES gave up early (sessions 35-36)",
+         "session-39": "defaults of session 39 (e78fca4, run 2026-12-04)",
          "default": "current defaults",
          "constant": "constant predictor (the default before the linear one)",
          "relative": "linear solves to the relative tolerance (the default before session 39)",
