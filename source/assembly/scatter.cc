@@ -35,8 +35,9 @@ namespace DuctileContact
      * up once per block row, the cell's columns are sorted by it, and each
      * owned row is walked once alongside them (the Epetra rows are sorted
      * after FillComplete). Rows owned by another rank go through Trilinos's
-     * non-local storage, as before. Every entry receives the same single
-     * addition as through AffineConstraints, so K is the same to the bit.
+     * non-local storage, as before; rows without an entry are skipped.
+     * Every entry receives the same single addition as through
+     * AffineConstraints.
      */
     void
     add_unconstrained(const FullMatrix<double>                   &matrix,
@@ -59,8 +60,7 @@ namespace DuctileContact
       for (auto &l : local)
         l.clear();
       in_block.resize(n);
-      // Rows without an entry are skipped (contact's local matrices are
-      // mostly such rows).
+      // Contact's local matrices are mostly rows without an entry.
       thread_local std::vector<bool> zero_row;
       zero_row.resize(n);
       for (unsigned int r = 0; r < n; ++r)
