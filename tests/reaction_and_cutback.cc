@@ -12,12 +12,18 @@
 //  C. the step controller after a cut-back when no step is easy (Easy step
 //     Newton iterations = 1): with Growth after accepted steps = 2 the
 //     increment grows, each time after two accepted steps at it; with 0 it
-//     never grows again.
+//     never grows again;
+//  D. prescribed values that the linear predictor reaches up to round-off
+//     count as reached: with the top moved linearly in t, only the first
+//     step (no predictor yet) starts with its Dirichlet data pending, so
+//     that no later first update is taken without the line search's test;
+//     with the constant predictor every step starts with them pending.
 #include "tests.h"
 
 #include <cmath>
 
 using namespace dealii;
+using namespace DuctileContact;
 
 namespace
 {
@@ -50,6 +56,37 @@ subsection Output
 end
 )" + top_bc +
            stepping;
+  }
+
+  /// Runs the scene like Testing::run_scene and returns how many Newton
+  /// iterations 0 began with Dirichlet data pending and how many there were
+  /// (Verbosity = 2 lines of the screen, on rank 0; zero elsewhere).
+  std::pair<unsigned int, unsigned int>
+  pending_starts(const std::string &prm, const std::string &directory)
+  {
+    RunParameters parameters;
+    parameters.parse_string(prm + "\nsubsection Output\n  set Directory = " +
+                            directory + "\n  set Verbosity = 2\nend\n");
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::filesystem::create_directories(directory);
+    MPI_Barrier(MPI_COMM_WORLD);
+    std::ostringstream screen;
+    {
+      TeeStream  log(screen);
+      Simulation simulation(parameters, MPI_COMM_WORLD, log);
+      if (simulation.run() != 0)
+        throw std::runtime_error("run in " + directory + " failed");
+    }
+    std::istringstream lines(screen.str());
+    unsigned int       pending = 0, starts = 0;
+    for (std::string line; std::getline(lines, line);)
+      if (line.find("Newton  0:") != std::string::npos)
+        {
+          ++starts;
+          pending +=
+            line.find("Dirichlet data pending") != std::string::npos ? 1 : 0;
+        }
+    return {pending, starts};
   }
 } // namespace
 
@@ -196,6 +233,35 @@ main(int argc, char **argv)
              Testing::relative_error(grows.at("F5_z").back(),
                                      stays.at("F5_z").back(),
                                      std::abs(stays.at("F5_z").back())) < 1e-8)
+        << std::endl;
+  }
+
+  // D. Pending prescribed values: genuine ones only.
+  {
+    const std::string top =
+      "subsection Boundary 5\n  set Constrained components = x, y, z\n"
+      "  set Displacement = 0.03*t; 0.01*t; -0.05*t\nend\n";
+    const auto stepping = [](const std::string &predictor) {
+      return "subsection Load stepping\n  set Time step = 0.1\n"
+             "  set End time = 0.7\n  set Predictor = " +
+             predictor +
+             "\nend\nsubsection Newton\n  set Relative tolerance = "
+             "1e-11\nend\n";
+    };
+    const auto linear =
+      pending_starts(column(top, stepping("linear")), "pending_linear");
+    const auto constant =
+      pending_starts(column(top, stepping("constant")), "pending_constant");
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << "steps starting with data pending: linear predictor "
+                << linear.first << " of " << linear.second
+                << ", constant predictor " << constant.first << " of "
+                << constant.second << std::endl;
+    out << "linear predictor: data pending at the start of step 1 only: "
+        << Testing::yes_no(linear.first == 1 && linear.second == 7)
+        << std::endl;
+    out << "constant predictor: at the start of every step: "
+        << Testing::yes_no(constant.first == 7 && constant.second == 7)
         << std::endl;
   }
 }

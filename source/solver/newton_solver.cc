@@ -249,11 +249,15 @@ namespace DuctileContact
                             ResidualEvaluation &trial_evaluation)
   {
     // Shorten while the state is not admissible or, once the prescribed
-    // values are reached, while the merit does not decrease. The residual
-    // of the accepted state also decides convergence, so a converged step
-    // never assembles a tangent it does not use.
-    const double r = merit(norms, tol);
-    step_length    = 1.;
+    // values are reached, while the merit does not fall below the largest
+    // of the last iterations' (Line search memory; recent_norms ends with
+    // `norms`). The residual of the accepted state also decides
+    // convergence, so a converged step never assembles a tangent it does
+    // not use.
+    double r = merit(norms, tol);
+    for (const Norms &n : recent_norms)
+      r = std::max(r, merit(n, tol));
+    step_length = 1.;
     for (unsigned int ls = 0; ls <= parameters.max_line_search_steps;
          ++ls, step_length *= 0.5)
       {
@@ -356,6 +360,11 @@ namespace DuctileContact
                       << std::endl;
         n = problem.modify_linear_system(x);
         r = merit(n, tol);
+        if (it == 0)
+          recent_norms.clear();
+        recent_norms.push_back(n);
+        while (recent_norms.size() > parameters.line_search_memory)
+          recent_norms.pop_front();
 
         unsigned int n_linear = 0;
         try

@@ -131,6 +131,22 @@ namespace DuctileContact
                       "as failed.",
                       Patterns::Integer(0, 30));
     prm.add_parameter(
+      "Line search memory",
+      line_search_memory,
+      "The line search accepts an update once the residual, in units of its "
+      "tolerances, falls below (1 - 1e-4 l) times the largest at the start "
+      "of the last this-many Newton iterations of the load step (l the step "
+      "length; a non-monotone line search, Grippo, Lampariello and Lucidi "
+      "1986); 1: below the current one. While a crack runs, a full Newton "
+      "update often raises the residual for an iteration on the way to the "
+      "solution, and backtracking to a strict decrease crawls and fails: "
+      "prm/sent_coarse.prm sets 5 (benchmarks/performance, session 41). It "
+      "changes the iterates, and so where a step fails and is cut back: "
+      "after a crack has run, the state of a rate-dependent scene can "
+      "differ by more than its tolerances (tests/ductile_notch's plastic "
+      "work at the end, 2 %).",
+      Patterns::Integer(1, 20));
+    prm.add_parameter(
       "Check tangent",
       check_tangent,
       "For developers of materials and contact terms: compare the tangent "

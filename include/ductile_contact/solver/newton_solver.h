@@ -7,6 +7,7 @@
 #include <ductile_contact/solver/nonlinear_problem.h>
 #include <ductile_contact/solver/solver_parameters.h>
 
+#include <deque>
 #include <limits>
 #include <string>
 #include <vector>
@@ -82,7 +83,8 @@ namespace DuctileContact
               NewtonReport             &report) const;
 
     /// Backtracking along #delta from @p x; on success @p x is the
-    /// accepted trial and @p trial its evaluation.
+    /// accepted trial and @p trial its evaluation. The merit of a trial is
+    /// compared with the largest of #recent_norms' (Line search memory).
     bool
     line_search(NonlinearProblem   &problem,
                 Vector             &x,
@@ -128,6 +130,9 @@ namespace DuctileContact
     const NewtonParameters &parameters;
     LinearSolver           &linear_solver;
     NewtonMonitor           monitor;
+    /// Residual norms at the start of the last Newton iterations of the
+    /// step, at most Line search memory of them (the newest last).
+    std::deque<Norms> recent_norms;
 
     /// Merit tolerances of the first iterate of the solve (ratios of the
     /// recorded merits are then meaningful).

@@ -95,6 +95,9 @@ namespace DuctileContact
     double       absolute_tolerance    = 1.e-12;
     bool         line_search           = true;
     unsigned int max_line_search_steps = 6;
+    /// Newton iterations whose merit the line search compares with (1:
+    /// monotone; see declare()).
+    unsigned int line_search_memory = 1;
     /// Compare K delta with central differences of R along delta.
     bool check_tangent = false;
     /// every iteration | chord after a quadratic step (see declare()).
