@@ -63,6 +63,7 @@ quantities = {
 names = {"2026-12-02": "defaults of 2026-12-02 (2a1bd1b)",
          "before-give-up": "defaults before GMRES gave up early (sessions 35-36)",
          "session-39": "defaults of session 39 (e78fca4, run 2026-12-04)",
+         "session-40": "defaults of session 40 (4ff552f, run 2026-12-05)",
          "default": "current defaults",
          "constant": "constant predictor (the default before the linear one)",
          "relative": "linear solves to the relative tolerance (the default before session 39)",
@@ -70,7 +71,8 @@ names = {"2026-12-02": "defaults of 2026-12-02 (2a1bd1b)",
          "single": "single-precision factors",
          "al": "augmented Lagrangian (2026-12-02)",
          "direct": "double-precision factors",
-         "amg": "GMRES-AMG (the default before session 35)"}
+         "amg": "GMRES-AMG (the default before session 35)",
+         "monotone": "Line search memory = 1 (monotone; with session 41's round-off rule)"}
 order = list(names)  # the variants in the order of the table
 
 

@@ -13,7 +13,10 @@
 # its default before its chord steps of session 38), and the scenes that
 # stop their linear solves at Newton's tolerances (block_on_plate,
 # ductile_notch, sent_coarse, two_bodies, ironing) with solves to their
-# relative tolerance (variant relative, their default before session 39).
+# relative tolerance (variant relative, their default before session 39),
+# and sent_coarse with a monotone line search (variant monotone: Line
+# search memory = 1, the default, which the scene sets to 5 since session
+# 41).
 # Runs of earlier code are kept under another variant name (e.g.
 # runs/SCENE/2026-12-02) for a before/after.
 # report.py writes results.md: wall time, Newton and linear iterations, time
@@ -38,7 +41,7 @@ declare -A variants=(
   [hertz_sphere]="default direct amg"
   [ironing]="default relative single"
   [ductile_notch]="default relative single"
-  [sent_coarse]="default relative constant single"
+  [sent_coarse]="default relative constant single monotone"
 )
 declare -A settings=(
   [al]="subsection Contact pair 1;  set Enforcement = augmented Lagrangian;end"
@@ -48,6 +51,7 @@ declare -A settings=(
   [constant]="subsection Load stepping;  set Predictor = constant;end"
   [newton]="subsection Newton;  set Tangent update = every iteration;end"
   [relative]="subsection Newton;  set Linear solve accuracy = relative tolerance;end"
+  [monotone]="subsection Newton;  set Line search memory = 1;end"
 )
 order=(box_compression necking_bar two_bodies block_on_plate hertz_sphere ironing ductile_notch sent_coarse)
 
