@@ -78,6 +78,11 @@ namespace DuctileContact
     const std::string state = problem.describe();
     if (!state.empty())
       out << "; " << state;
+    // Points whose branch (e.g. loading or yielding) the state contradicts:
+    // the next line is then the residual with the state's own branches.
+    if (evaluation.branch_changes > 0)
+      out << "; branches of the last tangent differ at "
+          << evaluation.branch_changes << " points";
     out << (pending ? ", Dirichlet data pending" : "") << std::defaultfloat
         << std::endl;
   }
