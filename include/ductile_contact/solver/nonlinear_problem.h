@@ -82,7 +82,8 @@ namespace DuctileContact
     }
 
     /// Constraints of the iterate @p x; returns whether prescribed values
-    /// are still pending (not reached by @p x).
+    /// are still pending (not reached by @p x beyond round-off: Newton then
+    /// takes the next update without the line search's merit test).
     virtual bool
     begin_iteration(const Vector &x) = 0;
 
