@@ -23,7 +23,6 @@
 #include <cmath>
 
 using namespace dealii;
-using namespace DuctileContact;
 
 namespace
 {
@@ -58,25 +57,16 @@ end
            stepping;
   }
 
-  /// Runs the scene like Testing::run_scene and returns how many Newton
-  /// iterations 0 began with Dirichlet data pending and how many there were
-  /// (Verbosity = 2 lines of the screen, on rank 0; zero elsewhere).
+  /// Runs the scene and returns how many Newton iterations 0 began with
+  /// Dirichlet data pending and how many there were (Verbosity = 2 lines of
+  /// the screen, on rank 0; zero elsewhere).
   std::pair<unsigned int, unsigned int>
   pending_starts(const std::string &prm, const std::string &directory)
   {
-    RunParameters parameters;
-    parameters.parse_string(prm + "\nsubsection Output\n  set Directory = " +
-                            directory + "\n  set Verbosity = 2\nend\n");
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::filesystem::create_directories(directory);
-    MPI_Barrier(MPI_COMM_WORLD);
     std::ostringstream screen;
-    {
-      TeeStream  log(screen);
-      Simulation simulation(parameters, MPI_COMM_WORLD, log);
-      if (simulation.run() != 0)
-        throw std::runtime_error("run in " + directory + " failed");
-    }
+    Testing::run_scene(prm + "\nsubsection Output\n  set Verbosity = 2\nend\n",
+                       directory,
+                       screen);
     std::istringstream lines(screen.str());
     unsigned int       pending = 0, starts = 0;
     for (std::string line; std::getline(lines, line);)

@@ -96,11 +96,13 @@ namespace Testing
 
   /**
    * Runs the scene in @p prm (text of a .prm file) with its results in
-   * folder @p directory and returns the statistics table. Throws if the run
-   * does not reach its end time.
+   * folder @p directory and returns the statistics table; its screen goes
+   * to @p screen. Throws if the run does not reach its end time.
    */
   inline Table
-  run_scene(const std::string &prm, const std::string &directory)
+  run_scene(const std::string &prm,
+            const std::string &directory,
+            std::ostream      &screen = std::cout)
   {
     const MPI_Comm                comm = MPI_COMM_WORLD;
     DuctileContact::RunParameters parameters;
@@ -111,7 +113,7 @@ namespace Testing
     MPI_Barrier(comm);
     int code = 0;
     {
-      DuctileContact::TeeStream  log(std::cout);
+      DuctileContact::TeeStream  log(screen);
       DuctileContact::Simulation simulation(parameters, comm, log);
       code = simulation.run();
     }
