@@ -64,6 +64,7 @@ names = {"2026-12-02": "defaults of 2026-12-02 (2a1bd1b)",
          "before-give-up": "defaults before GMRES gave up early (sessions 35-36)",
          "session-39": "defaults of session 39 (e78fca4, run 2026-12-04)",
          "session-40": "defaults of session 40 (4ff552f, run 2026-12-05)",
+         "session-41": "defaults of session 41 (bb4f62c, run 2026-12-05)",
          "default": "current defaults",
          "constant": "constant predictor (the default before the linear one)",
          "relative": "linear solves to the relative tolerance (the default before session 39)",
@@ -72,7 +73,8 @@ names = {"2026-12-02": "defaults of 2026-12-02 (2a1bd1b)",
          "al": "augmented Lagrangian (2026-12-02)",
          "direct": "double-precision factors",
          "amg": "GMRES-AMG (the default before session 35)",
-         "monotone": "Line search memory = 1 (monotone; with session 41's round-off rule)"}
+         "monotone": "Line search memory = 1 (monotone; with session 41's round-off rule)",
+         "linear": "Predictor = linear (the scene's choice before session 42)"}
 order = list(names)  # the variants in the order of the table
 
 
@@ -93,7 +95,8 @@ def row(scene, variant, run):
     contact = (timer_section(screen, "contact: integration, tangent") +
                timer_section(screen, "contact: integration, residual"))
     assembly = (timer_section(screen, "assembly") +
-                timer_section(screen, "assembly (line search)") - contact)
+                timer_section(screen, "assembly (line search)") +
+                timer_section(screen, "assembly (first guess)") - contact)
     solve = timer_section(screen, "linear solve")
     rest = wall - assembly - contact - solve
     per = lambda x: 1e3 * x / its  # noqa: E731

@@ -16,7 +16,8 @@
 # relative tolerance (variant relative, their default before session 39),
 # and sent_coarse with a monotone line search (variant monotone: Line
 # search memory = 1, the default, which the scene sets to 5 since session
-# 41).
+# 41), and sent_coarse with Predictor = linear (variant linear: the scene's
+# choice before session 42, which sets best linear).
 # Runs of earlier code are kept under another variant name (e.g.
 # runs/SCENE/2026-12-02) for a before/after.
 # report.py writes results.md: wall time, Newton and linear iterations, time
@@ -41,7 +42,7 @@ declare -A variants=(
   [hertz_sphere]="default direct amg"
   [ironing]="default relative single"
   [ductile_notch]="default relative single"
-  [sent_coarse]="default relative constant single monotone"
+  [sent_coarse]="default relative constant single monotone linear"
 )
 declare -A settings=(
   [al]="subsection Contact pair 1;  set Enforcement = augmented Lagrangian;end"
@@ -52,6 +53,7 @@ declare -A settings=(
   [newton]="subsection Newton;  set Tangent update = every iteration;end"
   [relative]="subsection Newton;  set Linear solve accuracy = relative tolerance;end"
   [monotone]="subsection Newton;  set Line search memory = 1;end"
+  [linear]="subsection Load stepping;  set Predictor = linear;end"
 )
 order=(box_compression necking_bar two_bodies block_on_plate hertz_sphere ironing ductile_notch sent_coarse)
 

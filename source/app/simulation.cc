@@ -600,6 +600,29 @@ namespace DuctileContact
 
 
 
+  std::vector<TrilinosWrappers::MPI::BlockVector>
+  Simulation::predict(const double                        ratio,
+                      TrilinosWrappers::MPI::BlockVector &u) const
+  {
+    const Predictor predictor = parameters.load_stepping.predictor;
+    if (predictor == Predictor::constant)
+      return {};
+    std::vector<TrilinosWrappers::MPI::BlockVector> alternatives;
+    if (predictor == Predictor::best_linear)
+      alternatives.push_back(u);
+    if (predictor == Predictor::linear_displacements)
+      u.block(Block::displacement)
+        .add(ratio, last_increment.block(Block::displacement));
+    else
+      u.add(ratio, last_increment);
+    for (auto &v : alternatives)
+      v.block(Block::displacement)
+        .add(ratio, last_increment.block(Block::displacement));
+    return alternatives;
+  }
+
+
+
   int
   Simulation::run()
   {
@@ -625,16 +648,18 @@ namespace DuctileContact
     while (t < T - eps)
       {
         const double dt_try = controller.next_increment(t);
-        const TrilinosWrappers::MPI::BlockVector u_old = u;
+        const TrilinosWrappers::MPI::BlockVector        u_old = u;
+        std::vector<TrilinosWrappers::MPI::BlockVector> alternatives;
         if (refined_trial)
           {
             u = *refined_trial;
             refined_trial.reset();
           }
-        else if (ls.predictor == Predictor::linear && last_dt > 0.)
-          u.add(dt_try / last_dt, last_increment);
+        else if (last_dt > 0.)
+          alternatives = predict(dt_try / last_dt, u);
         const StepData   step_data{t + dt_try, dt_try, &old_solution, &history};
-        const StepReport report = solver->solve_step(step_data, u);
+        const StepReport report =
+          solver->solve_step(step_data, u, alternatives);
 
         if (!report.converged)
           {

@@ -49,10 +49,22 @@ namespace DuctileContact
 
 
   StepReport
-  CoupledSolver::solve_step(const StepData                     &step,
-                            TrilinosWrappers::MPI::BlockVector &u)
+  CoupledSolver::solve_step(
+    const StepData                                        &step,
+    TrilinosWrappers::MPI::BlockVector                    &u,
+    const std::vector<TrilinosWrappers::MPI::BlockVector> &alternatives)
   {
     problem.begin_step(step, u);
+    if (!alternatives.empty())
+      {
+        std::vector<const TrilinosWrappers::MPI::BlockVector *> starts{&u};
+        for (const auto &v : alternatives)
+          starts.push_back(&v);
+        problem.freeze({{false, false, false}});
+        if (const std::size_t best = newton.best_start(problem, starts);
+            best > 0)
+          u = alternatives[best - 1];
+      }
     if (!contact)
       return solve_fields(u);
 

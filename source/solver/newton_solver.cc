@@ -300,6 +300,39 @@ namespace DuctileContact
 
 
 
+  std::size_t
+  NewtonSolver::best_start(NonlinearProblem                  &problem,
+                           const std::vector<const Vector *> &starts)
+  {
+    problem.begin_solve();
+    std::size_t        best       = 0;
+    double             best_merit = std::numeric_limits<double>::infinity();
+    std::ostringstream merits;
+    for (std::size_t i = 0; i < starts.size(); ++i)
+      {
+        problem.begin_iteration(*starts[i]);
+        ResidualEvaluation evaluation;
+        {
+          TimerOutput::Scope scope(monitor.timer, "assembly (first guess)");
+          evaluation = problem.assemble_right_hand_side(*starts[i]);
+        }
+        const double m = evaluation.admissible
+                           ? merit(evaluation.norms, tolerances(evaluation))
+                           : std::numeric_limits<double>::infinity();
+        merits << (i == 0 ? "" : ", ") << m;
+        if (m < best_merit)
+          {
+            best       = i;
+            best_merit = m;
+          }
+      }
+    monitor.out << "      first guesses: merits " << merits.str()
+                << "; starting from guess " << best + 1 << std::endl;
+    return best;
+  }
+
+
+
   NewtonReport
   NewtonSolver::solve(NonlinearProblem &problem, Vector &x)
   {

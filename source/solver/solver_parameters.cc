@@ -72,7 +72,13 @@ namespace DuctileContact
       "the notched and necking scenes of prm/ use it). Not for load paths "
       "with a kink or long frictional sliding: prm/ironing.prm, pressed "
       "and then dragged, needs 14-17 iterations per sliding step with it "
-      "and stalls.");
+      "and stalls. 'linear displacements': u extrapolated so, alpha and s "
+      "kept at their last values (internal fields that grow one way only "
+      "and may stop or jump, as s does when a crack runs). 'best linear': "
+      "of these two first guesses the one with the smaller residual (the "
+      "merit of Newton's line search; two residual assemblies more per "
+      "step), so that a step where the internal fields' last increment "
+      "misleads starts without it.");
     prm.leave_subsection();
   }
 

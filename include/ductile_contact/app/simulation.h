@@ -76,6 +76,13 @@ namespace DuctileContact
   private:
     void
     setup();
+    /// Load stepping/Predictor: the first guess @p u of a step (the last
+    /// accepted state on entry) moved along the last increment scaled by
+    /// @p ratio (the ratio of the step sizes); returns the other first
+    /// guesses Newton chooses among (best linear: the displacements'
+    /// extrapolation alone).
+    std::vector<dealii::TrilinosWrappers::MPI::BlockVector>
+    predict(double ratio, dealii::TrilinosWrappers::MPI::BlockVector &u) const;
     /// Distributes the DoFs and sizes everything that depends on them:
     /// once in setup() and after every refinement of the mesh.
     void

@@ -44,12 +44,16 @@ namespace DuctileContact
                   dealii::ConditionalOStream &verbose_out,
                   ContactProblem             *contact = nullptr);
 
-    /// Solves the load step @p step from @p u (owned entries); on success
-    /// @p u is the solution. On failure @p u is unspecified: the caller
-    /// restores its copy.
+    /// Solves the load step @p step from @p u (owned entries), or from the
+    /// one of @p alternatives whose residual is smaller than u's and
+    /// theirs (NewtonSolver::best_start(); they must reach the same
+    /// prescribed values as u); on success @p u is the solution. On failure
+    /// @p u is unspecified: the caller restores its copy.
     StepReport
     solve_step(const StepData                             &step,
-               dealii::TrilinosWrappers::MPI::BlockVector &u);
+               dealii::TrilinosWrappers::MPI::BlockVector &u,
+               const std::vector<dealii::TrilinosWrappers::MPI::BlockVector>
+                 &alternatives = {});
 
   private:
     /// The coupling strategy, without the contact augmentation.

@@ -71,6 +71,15 @@ namespace DuctileContact
     NewtonReport
     solve(NonlinearProblem &problem, Vector &x);
 
+    /// Of the first guesses @p starts (one problem, the same prescribed
+    /// values), the index of the one with the smallest merit (the merit
+    /// Newton's first iteration from it would see; an inadmissible state
+    /// has an infinite one); the first on a tie. One residual assembly per
+    /// guess.
+    std::size_t
+    best_start(NonlinearProblem                  &problem,
+               const std::vector<const Vector *> &starts);
+
   private:
     using Norms = std::vector<double>;
 

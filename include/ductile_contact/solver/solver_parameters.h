@@ -19,14 +19,19 @@ namespace DuctileContact
   enum class Predictor
   {
     constant,
-    linear
+    linear,
+    linear_displacements,
+    best_linear
   };
 
   inline const NameTable<Predictor> &
   predictor_names()
   {
-    static const NameTable<Predictor> t{{Predictor::constant, "constant"},
-                                        {Predictor::linear, "linear"}};
+    static const NameTable<Predictor> t{
+      {Predictor::constant, "constant"},
+      {Predictor::linear, "linear"},
+      {Predictor::linear_displacements, "linear displacements"},
+      {Predictor::best_linear, "best linear"}};
     return t;
   }
 
@@ -43,7 +48,8 @@ namespace DuctileContact
     /// Failed steps while t advances by less than 1e-3 Time step after
     /// which the run gives up (0: never; see declare()).
     unsigned int max_stalled_failures = 20;
-    /// constant | linear: first guess of a step (see declare()).
+    /// constant | linear | linear displacements | best linear: first guess
+    /// of a step (see declare()).
     Predictor predictor = Predictor::constant;
 
     void
