@@ -74,7 +74,8 @@ names = {"2026-12-02": "defaults of 2026-12-02 (2a1bd1b)",
          "direct": "double-precision factors",
          "amg": "GMRES-AMG (the default before session 35)",
          "monotone": "Line search memory = 1 (monotone; with session 41's round-off rule)",
-         "linear": "Predictor = linear (the scene's choice before session 42)"}
+         "linear": "Predictor = linear (the choice of the scene before session 42)",
+         "best": "Predictor = best linear"}
 order = list(names)  # the variants in the order of the table
 
 

@@ -17,7 +17,8 @@
 # and sent_coarse with a monotone line search (variant monotone: Line
 # search memory = 1, the default, which the scene sets to 5 since session
 # 41), and sent_coarse with Predictor = linear (variant linear: the scene's
-# choice before session 42, which sets best linear).
+# choice before session 42, which sets best linear) and ductile_notch with
+# Predictor = best linear (variant best).
 # Runs of earlier code are kept under another variant name (e.g.
 # runs/SCENE/2026-12-02) for a before/after.
 # report.py writes results.md: wall time, Newton and linear iterations, time
@@ -41,7 +42,7 @@ declare -A variants=(
   [block_on_plate]="default relative newton direct constant"
   [hertz_sphere]="default direct amg"
   [ironing]="default relative single"
-  [ductile_notch]="default relative single"
+  [ductile_notch]="default relative single best"
   [sent_coarse]="default relative constant single monotone linear"
 )
 declare -A settings=(
@@ -54,6 +55,7 @@ declare -A settings=(
   [relative]="subsection Newton;  set Linear solve accuracy = relative tolerance;end"
   [monotone]="subsection Newton;  set Line search memory = 1;end"
   [linear]="subsection Load stepping;  set Predictor = linear;end"
+  [best]="subsection Load stepping;  set Predictor = best linear;end"
 )
 order=(box_compression necking_bar two_bodies block_on_plate hertz_sphere ironing ductile_notch sent_coarse)
 
