@@ -604,21 +604,31 @@ namespace DuctileContact
   Simulation::predict(const double                        ratio,
                       TrilinosWrappers::MPI::BlockVector &u) const
   {
-    const Predictor predictor = parameters.load_stepping.predictor;
-    if (predictor == Predictor::constant)
-      return {};
-    std::vector<TrilinosWrappers::MPI::BlockVector> alternatives;
-    if (predictor == Predictor::best_linear)
-      alternatives.push_back(u);
-    if (predictor == Predictor::linear_displacements)
-      u.block(Block::displacement)
-        .add(ratio, last_increment.block(Block::displacement));
-    else
-      u.add(ratio, last_increment);
-    for (auto &v : alternatives)
-      v.block(Block::displacement)
-        .add(ratio, last_increment.block(Block::displacement));
-    return alternatives;
+    const auto extrapolate_displacements =
+      [&](TrilinosWrappers::MPI::BlockVector &v) {
+        v.block(Block::displacement)
+          .add(ratio, last_increment.block(Block::displacement));
+      };
+    switch (parameters.load_stepping.predictor)
+      {
+      case Predictor::constant:
+        return {};
+      case Predictor::linear:
+        u.add(ratio, last_increment);
+        return {};
+      case Predictor::linear_displacements:
+        extrapolate_displacements(u);
+        return {};
+      case Predictor::best_linear:
+        {
+          std::vector<TrilinosWrappers::MPI::BlockVector> alternatives{u};
+          extrapolate_displacements(alternatives[0]);
+          u.add(ratio, last_increment);
+          return alternatives;
+        }
+      }
+    Assert(false, ExcInternalError());
+    return {};
   }
 
 
