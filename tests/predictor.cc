@@ -1,19 +1,23 @@
 // Load stepping/Predictor on a homogeneous bar that cracks (unit cube, 2x2x2
-// Q2 cells, symmetry planes, pulled on x = 1, as tests/fracture_bar): s
-// grows from zero through the peak (t = 0.4) until the pull stops at t =
-// 0.6 and is held.
+// Q2 cells, symmetry planes, pulled on x = 1, as tests/fracture_bar, with a
+// small crack viscosity): s grows from zero through the peak (t = 0.4)
+// until the pull stops at t = 0.6; held there, s relaxes viscously towards
+// its equilibrium, each increment about 0.29 times the last.
 //  - 'linear', 'linear displacements' and 'best linear' give the same
 //    curve (the converged states do not depend on the first guess);
 //  - 'best linear' chooses among the first guesses of the two others: at
-//    every step where they are not yet within Newton's tolerances (merit
-//    above 1), its two merits are those that Newton's first iteration sees
-//    in the runs with 'linear' and 'linear displacements' (the same states
-//    to the solver tolerance), so the guesses are those two;
+//    every step where they are far from Newton's tolerances (merit above
+//    100; the runs' converged states differ within those tolerances, which
+//    moves a merit near 1 by up to 1 %), its two merits are those that Newton's
+//    first iteration sees in the runs with 'linear' and 'linear displacements'
+//    (the same states to the solver tolerance), so the guesses are those two;
 //  - Newton then starts from the guess with the smaller merit: its first
 //    iteration shows that merit;
 //  - each guess is chosen by a clear margin (a merit 10 % below the
-//    other's) in some step: the extrapolation of s helps while s grows,
-//    and misleads once the pull is held.
+//    other's, both far from Newton's tolerances) in some step: the
+//    extrapolation of s helps while s grows with the pull; while it relaxes
+//    at the hold (increments shrinking faster than by half per step), the
+//    last increment overshoots by more than keeping s misses.
 #include "tests.h"
 
 using namespace dealii;
@@ -34,9 +38,9 @@ namespace
     set Critical energy release rate = )" +
                                   Utilities::to_string(g_c, 16) + R"(
     set Length scale                 = 1
-    set Viscosity                    = 0
+    set Viscosity                    = 1.4e-7
   end
-)") + Testing::uniaxial_pull_prm("0.0025*if(t < 0.6, t, 0.0015)") +
+)") + Testing::uniaxial_pull_prm("0.0025*min(t, 0.6)") +
            R"(
 subsection Coupling
   set Strategy        = monolithic
@@ -154,7 +158,8 @@ main(int argc, char **argv)
       for (unsigned int k = 0; sizes && k < n; ++k)
         {
           // Newton 0 prints 4 digits; the guesses' merits 6.
-          if (std::min(g[k][0], g[k][1]) > 1.)
+          const bool far = std::min(g[k][0], g[k][1]) > 100.;
+          if (far)
             guesses_match =
               guesses_match &&
               close(g[k][0], starts_linear.newton_0[k + 1], 2e-3) &&
@@ -164,7 +169,7 @@ main(int argc, char **argv)
           starts_match             = starts_match && (c == 1 || c == 2) &&
                          g[k][c - 1] <= other * (1. + 1e-5) &&
                          close(g[k][c - 1], starts_best.newton_0[k + 1], 2e-3);
-          if (g[k][c - 1] < 0.9 * other)
+          if (far && g[k][c - 1] < 0.9 * other)
             (c == 1 ? first : second) += 1;
           std::cout << "step " << k + 2 << ": merits " << g[k][0] << ", "
                     << g[k][1] << "; linear " << starts_linear.newton_0[k + 1]

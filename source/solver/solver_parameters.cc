@@ -284,12 +284,13 @@ namespace DuctileContact
                "Factorisation precision",
                precision,
                factor_precision_names(),
-               "Direct solver = mumps: double, or single-precision factors "
-               "(half the memory traffic and about half the factorisation "
-               "time); single-precision factors are used through GMRES to "
-               "Relative tolerance like reused ones, so the answer is the "
-               "same; a matrix they cannot precondition (condition number "
-               "near 1e7 and above) is factorised again in double.");
+               "Direct solver = mumps: single-precision factors (half the "
+               "memory traffic and about half the factorisation time of "
+               "double ones) are used through GMRES to Relative tolerance "
+               "like reused ones, so the answer is the same; a matrix they "
+               "cannot precondition (condition number near 1e7 and above) "
+               "is factorised again in double. double: exact solves with "
+               "the factors of the current matrix.");
     prm.add_parameter(
       "Factorisation reuse",
       reuse_iterations,
