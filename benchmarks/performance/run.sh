@@ -1,11 +1,10 @@
 #!/usr/bin/env bash
 # Issue #24: every shipped scene that finishes within an hour, run whole on
-# 2 MPI ranks with the current defaults, once more with single-precision
-# MUMPS factors (variant single, to choose that default; not for
-# hertz_sphere and block_on_plate, whose default it is), and the contact
+# 2 MPI ranks with the current defaults, once more with double-precision
+# MUMPS factors (variant direct: every scene on the direct solver; single-
+# precision factors are the default since session 43), the contact
 # scenes with the augmented Lagrangian (the enforcement before the
-# semi-smooth Newton method), hertz_sphere and block_on_plate with
-# double-precision factors (variant direct), hertz_sphere with GMRES-AMG
+# semi-smooth Newton method), hertz_sphere with GMRES-AMG
 # (variant amg, its default before session 35), and the scenes whose default is the linear
 # predictor since session 36 (sent_coarse) or 37 (two_bodies,
 # block_on_plate) with the constant one (variant constant), and
@@ -36,18 +35,17 @@ require_build
 # scene -> variants; a variant is a name and .prm lines to append
 # (';' separates lines), "default" appends nothing.
 declare -A variants=(
-  [box_compression]="default single"
-  [necking_bar]="default single"
-  [two_bodies]="default relative constant al single"
+  [box_compression]="default"
+  [necking_bar]="default direct"
+  [two_bodies]="default relative constant al direct"
   [block_on_plate]="default relative newton direct constant"
   [hertz_sphere]="default direct amg"
-  [ironing]="default relative single"
-  [ductile_notch]="default relative single best"
-  [sent_coarse]="default relative constant single monotone linear"
+  [ironing]="default relative direct"
+  [ductile_notch]="default relative direct best"
+  [sent_coarse]="default relative constant direct monotone linear"
 )
 declare -A settings=(
   [al]="subsection Contact pair 1;  set Enforcement = augmented Lagrangian;end"
-  [single]="subsection Linear solver;  set Factorisation precision = single;end"
   [direct]="subsection Linear solver;  set Type = direct;  set Factorisation precision = double;end"
   [amg]="subsection Linear solver;  set Type = gmres-amg;end"
   [constant]="subsection Load stepping;  set Predictor = constant;end"
