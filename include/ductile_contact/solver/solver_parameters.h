@@ -242,7 +242,7 @@ namespace DuctileContact
     DirectOrdering   ordering      = DirectOrdering::metis;
     Factorisation    factorisation = Factorisation::lu;
     /// Single-precision factors: as fast or faster in every shipped scene
-    /// on the direct solver (sent_coarse -13 %, two_bodies -8 %; the same
+    /// on the direct solver (sent_coarse -17 %, two_bodies -10 %; the same
     /// Newton iterations and answers, benchmarks/performance, session 43).
     FactorPrecision precision = FactorPrecision::single_precision;
     /// Direct solver = mumps: GMRES iterations preconditioned by the last
