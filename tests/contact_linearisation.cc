@@ -6,6 +6,9 @@
 //    it partly (polygon vertices from both faces and from edge
 //    intersections), dual and standard multiplier basis, and the same
 //    faces flat and touching (zero gap, as at the start of a patch test);
+//  - lumped slave weights (SlaveWeights::lumped, semi-smooth Newton): D_ii
+//    and its derivatives are the row sums of the full D, the rest of D is
+//    zero and M is unchanged, with and without derivatives;
 //  - the derivatives of a face's unit normal (Quad9::normal_derivatives);
 //  - the Jacobian of the nodal contact law (nodal_contact) when the node
 //    sticks, when it slips (with a rotated traction history) and without
@@ -122,6 +125,51 @@ namespace
   }
 
   void
+  check_lumped(std::ostream &out, const bool derivatives)
+  {
+    const Quad9       slave  = face(0., false, 0., 0., 0., 0.08);
+    const Quad9       master = face(2e-3, true, 0.4, 0.35, 0.2, -0.05);
+    FacePairOperators full, lumped;
+    MortarFace(slave, true).integrate(master, full, derivatives);
+    MortarFace(slave, true, SlaveWeights::lumped)
+      .integrate(master, lumped, derivatives);
+    const unsigned int n_a = derivatives ? face_pair_coordinates : 0;
+    Error              sums, rest, m;
+    for (unsigned int i = 0; i < 9; ++i)
+      {
+        double                                    sum = 0.;
+        std::array<double, face_pair_coordinates> dsum{};
+        for (unsigned int k = 0; k < 9; ++k)
+          {
+            sum += full.D[i][k];
+            for (unsigned int a = 0; a < n_a; ++a)
+              dsum[a] += full.dD[i][k][a];
+            if (k != i)
+              rest.add(0., std::abs(lumped.D[i][k]));
+            m.add(full.M[i][k], lumped.M[i][k]);
+            for (unsigned int a = 0; a < n_a; ++a)
+              {
+                if (k != i)
+                  rest.add(0., std::abs(lumped.dD[i][k][a]));
+                m.add(full.dM[i][k][a], lumped.dM[i][k][a]);
+              }
+          }
+        sums.add(sum, lumped.D[i][i]);
+        for (unsigned int a = 0; a < n_a; ++a)
+          sums.add(dsum[a], lumped.dD[i][i][a]);
+      }
+    std::cout << "lumped" << (derivatives ? " with derivatives" : "")
+              << ": sums " << sums.relative() << " rest " << rest.difference
+              << " M " << m.relative() << std::endl;
+    out << "lumped slave weights" << (derivatives ? ", derivatives" : "")
+        << ": D_ii = sum_k D_ik (1e-12): "
+        << Testing::yes_no(sums.relative() < 1e-12)
+        << ", the rest of D zero: " << Testing::yes_no(rest.difference == 0.)
+        << ", M unchanged (1e-12): " << Testing::yes_no(m.relative() < 1e-12)
+        << std::endl;
+  }
+
+  void
   check_normal(std::ostream &out)
   {
     const Quad9  q = face(0., false, 0.3, 0.1, 0.2, 0.2);
@@ -208,6 +256,8 @@ main(int argc, char **argv)
   check_operators(out, true, false);
   check_operators(out, false, false);
   check_operators(out, true, true);
+  check_lumped(out, false);
+  check_lumped(out, true);
   check_normal(out);
   check_law(out, "no friction", 0., 1e10, 0);
   check_law(out, "stick", 10., 1e10, 1);

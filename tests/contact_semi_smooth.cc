@@ -10,7 +10,14 @@
 //  - The paper's block on the plate (coarse copy of prm/two_bodies.prm,
 //    mu_c = 0.2, 3 steps): the condensed tangent against central finite
 //    differences of the whole condensed residual (frictionless, sticking
-//    and slipping nodes at once) and at most 5 Newton iterations per step.
+//    and slipping nodes at once); at most 6 Newton iterations in the
+//    first step and 1 in the others. The first starts touching at zero
+//    pressure, where the stick/slip state of every node is decided by the
+//    round-off of gaps and tractions near 1e-21: its path moves with the
+//    summation order of the mortar integrals (5 or 6 iterations; the
+//    residual after the first update 129.9, 130.0 or 130.3 with the same
+//    code built with and without -march=native, and with D lumped before
+//    or after the integration), the later steps' does not.
 //    (The patch test's flush edges put kinks into the residual, so its
 //    tangent is not checked there.)
 //  - Coulomb sliding of contact_friction (mu_c = 0.3): the interface
@@ -109,10 +116,13 @@ main(int argc, char **argv)
     for (std::size_t n = 1; n <= last; ++n)
       {
         tangent_error = std::max(tangent_error, s.at("tangent_error")[n]);
-        newton        = std::max(newton, s.at("newton_iterations")[n]);
+        if (n > 1)
+          newton = std::max(newton, s.at("newton_iterations")[n]);
       }
+    const double first = s.at("newton_iterations")[1];
     std::cout << "block on plate: tangent error " << tangent_error
-              << ", Newton per step " << newton << ", sticking "
+              << ", Newton in the first step " << first << ", later "
+              << newton << ", sticking "
               << s.at("contact1_sticking_nodes")[last] << ", slipping "
               << s.at("contact1_slipping_nodes")[last] << std::endl;
     out << "block on plate, mu_c = 0.2:" << std::endl
@@ -123,8 +133,9 @@ main(int argc, char **argv)
         << "  condensed tangent = finite differences of the residual "
            "(1e-3 at the last update of each step): "
         << Testing::yes_no(tangent_error < 1e-3) << std::endl
-        << "  at most 5 Newton iterations per step: "
-        << Testing::yes_no(newton <= 5) << std::endl;
+        << "  at most 6 Newton iterations in the first step (from zero "
+           "pressure), 1 in the others: "
+        << Testing::yes_no(first <= 6 && newton <= 1) << std::endl;
   }
 
   {

@@ -112,10 +112,10 @@ namespace DuctileContact
     for (unsigned int j = 0; j < ns; ++j)
       {
         const auto &dofs = slave.nodes[j].dofs;
-        nodes.owned[j]   = pair.carries_contact(j) &&
-                         discretisation.locally_owned_dofs.is_element(dofs[0]);
-        if (!nodes.owned[j])
+        if (!pair.carries_contact(j))
           continue;
+        nodes.owned[j] = discretisation.locally_owned_dofs.is_element(dofs[0]);
+        // @p constraints know every contact-surface DoF (extend_constraints()).
         for (unsigned int c = 0; c < dim; ++c)
           {
             // No hanging node here: check_condensable() refused them.
@@ -123,7 +123,7 @@ namespace DuctileContact
                      constraints.get_constraint_entries(dofs[c])->empty(),
                    ExcInternalError());
             nodes.free[j][c] = !constraints.is_constrained(dofs[c]);
-            if (nodes.free[j][c])
+            if (nodes.owned[j] && nodes.free[j][c])
               f[dim * j + c] = -R(dofs[c]) / pair.aggregates[j].area;
           }
       }
@@ -309,6 +309,7 @@ namespace DuctileContact
     const unsigned int                              j,
     const CondensedNodes                           &nodes,
     std::map<unsigned int, std::array<double, 10>> &g,
+    const bool                                      direct,
     const AffineConstraints<double>                &constraints,
     const AssemblyTargets                          &targets) const
   {
@@ -318,7 +319,8 @@ namespace DuctileContact
     const double          A  = pair.aggregates[j].area;
     const auto           &J  = nodes.law[j].jacobian;
     const Tensor<1, dim> &f  = pair.nodal[j].force_density;
-    add_direct_gradients(pair, j, g);
+    if (direct)
+      add_direct_gradients(pair, j, g);
     std::map<unsigned int, unsigned int>       local;
     const std::vector<types::global_dof_index> indices =
       local_numbering(pair, j, {j}, g, local);
@@ -390,22 +392,42 @@ namespace DuctileContact
             }
         }
     std::vector<std::map<unsigned int, std::array<double, 10>>> gradients(ns);
+    // The nodes whose gradients this rank has a share of.
+    std::vector<bool> held;
     if (targets.tangent)
       {
-        linearise_operators(
-          pair, needed, forces, false, constraints, targets, gradients);
+        held = linearise_operators(pair,
+                                   needed,
+                                   forces,
+                                   false,
+                                   std::count(nodes.owned.begin(),
+                                              nodes.owned.end(),
+                                              true),
+                                   GradientShare::partial,
+                                   constraints,
+                                   targets,
+                                   gradients);
         fold_hanging_gradients(pair, nodes.owned, gradients);
       }
+    // The bulk rows of node j are read (combine_rows()) before its
+    // aggregate terms go into them.
     for (unsigned int j = 0; j < ns; ++j)
       {
         if (!nodes.owned[j])
           continue;
         add_condensed_vectors(pair, j, nodes, constraints, targets);
-        if (!targets.tangent)
-          continue;
-        combine_rows(pair, j, nodes, constraints, *targets.tangent);
-        add_aggregate_terms(pair, j, nodes, gradients[j], constraints, targets);
+        if (targets.tangent)
+          combine_rows(pair, j, nodes, constraints, *targets.tangent);
       }
+    if (!targets.tangent)
+      return;
+    // Each rank adds the terms of its share of the gradients (rows owned
+    // elsewhere are sent at the compress); the owner adds the direct ones.
+    for (unsigned int j = 0; j < ns; ++j)
+      if (pair.carries_contact(j) &&
+          (nodes.owned[j] || (held[j] && !gradients[j].empty())))
+        add_aggregate_terms(
+          pair, j, nodes, gradients[j], nodes.owned[j], constraints, targets);
   }
 
 
@@ -419,22 +441,25 @@ namespace DuctileContact
     for (unsigned int h = 0; h < pair.slave.nodes.size(); ++h)
       {
         const auto &parents = pair.slave.nodes[h].parents;
-        if (std::none_of(parents.begin(), parents.end(), [&](const auto &p) {
+        if (parents.empty())
+          continue;
+        // Area, G and H of h through D and M (this rank's share, to every
+        // parent) and through the positions (once: to the parents owned
+        // here); its normal is not folded.
+        std::map<unsigned int, std::array<double, 10>> direct;
+        if (std::any_of(parents.begin(), parents.end(), [&](const auto &p) {
               return owned[p.first];
             }))
-          continue;
-        // Area, G and H of h through D and M (linearise_operators()) and
-        // through the positions; its normal is not folded.
-        auto &g = gradients[h];
-        add_direct_gradients(pair, h, g, false);
+          add_direct_gradients(pair, h, direct, false);
         for (const auto &[p, w] : parents)
-          if (owned[p])
-            for (const auto &[key, e] : g)
-              {
-                auto &target = gradients[p][key];
-                for (unsigned int a = 0; a < 7; ++a)
-                  target[a] += w * e[a];
-              }
+          for (const auto *g : {&gradients[h], &direct})
+            if (g == &gradients[h] || owned[p])
+              for (const auto &[key, e] : *g)
+                {
+                  auto &target = gradients[p][key];
+                  for (unsigned int a = 0; a < 7; ++a)
+                    target[a] += w * e[a];
+                }
       }
   }
 } // namespace DuctileContact

@@ -419,7 +419,9 @@ namespace DuctileContact
       {
         if (pair.candidates[f].empty())
           continue;
-        const MortarFace face(pair.slave_faces[f], pair.dual);
+        const MortarFace face(pair.slave_faces[f],
+                              pair.dual,
+                              pair.slave_weights());
         // Exact check first: only candidates whose current box comes within
         // half a slave face of this face's box can overlap it (an open gap
         // wider than that is not in contact in any case).
@@ -442,7 +444,8 @@ namespace DuctileContact
                 const unsigned int j = slave.faces[f].nodes[i];
                 for (unsigned int k = 0; k < 9; ++k)
                   {
-                    pair.D[j][slave.faces[f].nodes[k]] += operators->D[i][k];
+                    if (k == i || !pair.semi_smooth)
+                      pair.D[j][slave.faces[f].nodes[k]] += operators->D[i][k];
                     pair.M[j][master.faces[c].nodes[k]] += operators->M[i][k];
                   }
               }

@@ -65,16 +65,20 @@ namespace DuctileContact
       return shared;
     }
 
-    /// This rank's equal, contiguous share [first, second) of the face
-    /// pairs @p overlaps whose slave face has a node in @p any (contiguous:
-    /// the pairs of one slave face share its MortarFace).
+    /// This rank's contiguous share [first, second) of the face pairs
+    /// @p overlaps whose slave face has a node in @p any (contiguous: the
+    /// pairs of one slave face share its MortarFace), sized so that every
+    /// rank's integration plus its @p rows_after rows of later work (a
+    /// row counted as row_cost face pairs) come out even.
     std::pair<std::size_t, std::size_t>
     face_pair_share(
       const std::vector<std::pair<unsigned int, unsigned int>> &overlaps,
       const ContactSurface                                     &slave,
       const std::vector<bool>                                  &any,
+      const unsigned int                                        rows_after,
       const MPI_Comm                                            comm)
     {
+      constexpr double         row_cost = 0.1;
       std::vector<std::size_t> touching;
       for (std::size_t i = 0; i < overlaps.size(); ++i)
         {
@@ -84,11 +88,29 @@ namespace DuctileContact
                           [&](const unsigned int j) { return any[j]; }))
             touching.push_back(i);
         }
-      const std::size_t rank    = Utilities::MPI::this_mpi_process(comm);
-      const std::size_t n_ranks = Utilities::MPI::n_mpi_processes(comm);
-      const std::size_t begin   = touching.size() * rank / n_ranks;
-      const std::size_t end     = touching.size() * (rank + 1) / n_ranks;
-      if (begin == end)
+      // Per rank: the pairs it takes = an even share of all the work less
+      // its own rows, the shares then scaled to the pairs there are.
+      const std::vector<unsigned int> rows =
+        Utilities::MPI::all_gather(comm, rows_after);
+      const std::size_t n_ranks = rows.size();
+      double            total   = touching.size();
+      for (const unsigned int r : rows)
+        total += row_cost * r;
+      std::vector<double> wanted(n_ranks);
+      double              sum = 0.;
+      for (std::size_t r = 0; r < n_ranks; ++r)
+        sum += wanted[r] = std::max(0., total / n_ranks - row_cost * rows[r]);
+      const std::size_t rank   = Utilities::MPI::this_mpi_process(comm);
+      double            before = 0.;
+      for (std::size_t r = 0; r < rank; ++r)
+        before += wanted[r];
+      const auto bound = [&](const double w) {
+        return static_cast<std::size_t>(
+          std::lround(sum > 0. ? touching.size() * w / sum : 0.));
+      };
+      const std::size_t begin = bound(before);
+      const std::size_t end   = bound(before + wanted[rank]);
+      if (begin >= end)
         return {0, 0};
       return {touching[begin], touching[end - 1] + 1};
     }
@@ -142,12 +164,14 @@ namespace DuctileContact
 
 
 
-  void
+  std::vector<bool>
   ContactProblem::linearise_operators(
     const Pair                        &pair,
     const std::vector<bool>           &needed,
     const std::vector<Tensor<1, dim>> &forces,
     const bool                         slave_rows,
+    const unsigned int                 rows_after,
+    const GradientShare                share,
     const AffineConstraints<double>   &constraints,
     const AssemblyTargets             &targets,
     Gradients                         &gradients) const
@@ -163,7 +187,7 @@ namespace DuctileContact
                              constraints,
                              targets,
                              gradients);
-        return;
+        return needed;
       }
     // Every rank integrates a share of the face pairs that any rank needs,
     // whichever rank owns their nodes.
@@ -173,11 +197,14 @@ namespace DuctileContact
       shared.any,
       shared.forces,
       slave_rows,
-      face_pair_share(pair.overlaps, pair.slave, shared.any, comm),
+      face_pair_share(pair.overlaps, pair.slave, shared.any, rows_after, comm),
       constraints,
       targets,
       gradients);
+    if (share == GradientShare::partial)
+      return shared.any;
     exchange_gradients(shared, needed, comm, gradients);
+    return needed;
   }
 
 
@@ -215,7 +242,9 @@ namespace DuctileContact
           continue;
         if (f != face_index)
           {
-            face = std::make_unique<MortarFace>(pair.slave_faces[f], pair.dual);
+            face       = std::make_unique<MortarFace>(pair.slave_faces[f],
+                                                pair.dual,
+                                                pair.slave_weights());
             face_index = f;
           }
         face->integrate(master.current_face(c), *operators, true);
@@ -238,6 +267,8 @@ namespace DuctileContact
                 std::array<double, 10> &e = g[keys[a]];
                 for (unsigned int k = 0; k < 9; ++k)
                   {
+                    if (pair.semi_smooth && k != i)
+                      continue; // lumped: D_ii holds the row sum
                     const double       d    = operators->dD[i][k][a];
                     const unsigned int node = pair.semi_smooth ? j : s_nodes[k];
                     e[0] += d;
@@ -349,8 +380,15 @@ namespace DuctileContact
         std::vector<Tensor<1, dim>> forces(ns);
         for (unsigned int j = 0; j < ns; ++j)
           forces[j] = pair.nodal[j].force_density;
-        linearise_operators(
-          pair, needed, forces, true, constraints, targets, gradients);
+        linearise_operators(pair,
+                            needed,
+                            forces,
+                            true,
+                            0,
+                            GradientShare::complete,
+                            constraints,
+                            targets,
+                            gradients);
       }
 
     for (unsigned int j = 0; j < ns; ++j)

@@ -97,26 +97,33 @@ namespace DuctileContact
       return a;
     }
 
-    /// D = a Dhat and M = a Mhat of the pair (class doc); false when the
-    /// faces do not overlap.
+    /// D = a Dhat and M = a Mhat of the pair (class doc), D as @p weights
+    /// says (with lumped weights only the row sums, from dhat_m = int N_m);
+    /// false when the faces do not overlap.
     template <typename Number>
     bool
     integrate_pair(const FaceCoordinates<Number> &slave,
                    const FaceCoordinates<Number> &master,
                    const Matrix9<Number>         &a,
+                   const SlaveWeights             weights,
                    Matrix9<Number>               &D,
                    Matrix9<Number>               &M)
     {
       const auto points = mortar_points(slave, master);
       if (points.empty())
         return false;
-      Matrix9<Number> D_hat, M_hat;
+      const bool            lumped = weights == SlaveWeights::lumped;
+      Matrix9<Number>       D_hat, M_hat;
+      std::array<Number, 9> d_hat;
       for (unsigned int i = 0; i < 9; ++i)
-        for (unsigned int k = 0; k < 9; ++k)
-          {
-            D_hat[i][k] = 0.;
-            M_hat[i][k] = 0.;
-          }
+        {
+          d_hat[i] = 0.;
+          for (unsigned int k = 0; k < 9; ++k)
+            {
+              D_hat[i][k] = 0.;
+              M_hat[i][k] = 0.;
+            }
+        }
       std::array<Number, 9> ns, nm;
       for (const auto &q : points)
         {
@@ -125,8 +132,11 @@ namespace DuctileContact
           for (unsigned int i = 0; i < 9; ++i)
             {
               const Number w = q.weight * ns[i];
-              for (unsigned int k = i; k < 9; ++k)
-                D_hat[i][k] += w * ns[k];
+              if (lumped)
+                d_hat[i] += w;
+              else
+                for (unsigned int k = i; k < 9; ++k)
+                  D_hat[i][k] += w * ns[k];
               for (unsigned int l = 0; l < 9; ++l)
                 M_hat[i][l] += w * nm[l];
             }
@@ -141,7 +151,10 @@ namespace DuctileContact
             M[i][k] = 0.;
             for (unsigned int m = 0; m < 9; ++m)
               {
-                D[i][k] += a[i][m] * D_hat[m][k];
+                if (lumped && k == i)
+                  D[i][k] += a[i][m] * d_hat[m];
+                else if (!lumped)
+                  D[i][k] += a[i][m] * D_hat[m][k];
                 M[i][k] += a[i][m] * M_hat[m][k];
               }
           }
@@ -168,9 +181,12 @@ namespace DuctileContact
 
 
 
-  MortarFace::MortarFace(const Quad9 &slave, const bool dual)
+  MortarFace::MortarFace(const Quad9       &slave,
+                         const bool         dual,
+                         const SlaveWeights weights)
       : slave(slave)
       , dual(dual)
+      , weights(weights)
       , coefficients(basis_coefficients(coordinates(slave), dual))
   {
   }
@@ -183,8 +199,12 @@ namespace DuctileContact
                         const bool         derivatives) const
   {
     if (!derivatives)
-      return integrate_pair(
-        coordinates(slave), coordinates(master), coefficients, out.D, out.M);
+      return integrate_pair(coordinates(slave),
+                            coordinates(master),
+                            coefficients,
+                            weights,
+                            out.D,
+                            out.M);
 
     FaceCoordinates<ContactAD> s, m;
     for (unsigned int i = 0; i < 9; ++i)
@@ -201,7 +221,7 @@ namespace DuctileContact
         basis_derivatives = b;
       }
     Matrix9<ContactAD> D, M;
-    if (!integrate_pair(s, m, basis_derivatives->a, D, M))
+    if (!integrate_pair(s, m, basis_derivatives->a, weights, D, M))
       return false;
     for (unsigned int i = 0; i < 9; ++i)
       for (unsigned int k = 0; k < 9; ++k)

@@ -9,6 +9,7 @@
 #include <ductile_contact/assembly/assembly_data.h>
 #include <ductile_contact/contact/contact_parameters.h>
 #include <ductile_contact/contact/contact_surface.h>
+#include <ductile_contact/contact/mortar_operators.h>
 #include <ductile_contact/contact/nodal_complementarity.h>
 #include <ductile_contact/contact/nodal_contact.h>
 #include <ductile_contact/materials/body_parameters.h>
@@ -107,10 +108,12 @@ namespace DuctileContact
    * master rows owned by other ranks: those are added through the
    * distributed matrix and vectors (compress(add)). The derivatives of D
    * and M (the expensive part of a tangent assembly) are needed for the
-   * face pairs that touch an active slave node; all ranks integrate equal
-   * shares of them and send the derivatives to the nodes' owners
-   * (linearise_operators()). Results are the same on any number of ranks
-   * up to round-off.
+   * face pairs that touch an active slave node; all ranks integrate shares
+   * of them (linearise_operators()). The augmented Lagrangian sends the
+   * derivatives to the nodes' owners; the condensation of semi-smooth
+   * Newton, whose tangent terms are linear in them, adds each rank's
+   * partial derivatives where they were made (condense()). Results are the
+   * same on any number of ranks up to round-off.
    */
   class ContactProblem
   {
@@ -266,6 +269,14 @@ namespace DuctileContact
       bool
       carries_contact(const unsigned int j) const;
 
+      /// The slave weights D needs: semi-smooth Newton lumps D to its
+      /// row's node (D[j] then holds only D_jj, the row sum).
+      SlaveWeights
+      slave_weights() const
+      {
+        return semi_smooth ? SlaveWeights::lumped : SlaveWeights::full;
+      }
+
       /// The master weights of node @p j's traction: folded_M[j] if
       /// there is one, else M[j].
       const std::map<unsigned int, double> &
@@ -355,7 +366,8 @@ namespace DuctileContact
     };
 
     /// The tractions f_j = -R_j / A_j (from the compressed residual of
-    /// @p targets), the complementarity of every node and the summary.
+    /// @p targets), the complementarity and free DoFs of every node that
+    /// carries contact, the summary.
     void
     condensed_states(Pair                                    &pair,
                      const dealii::AffineConstraints<double> &constraints,
@@ -381,14 +393,27 @@ namespace DuctileContact
                  dealii::TrilinosWrappers::BlockSparseMatrix &tangent) const;
 
     /// The tangent terms of node @p j through its aggregates (@p g holds
-    /// their derivatives through dD and dM).
+    /// their derivatives through dD and dM, all of them or this rank's
+    /// share: the terms are linear in them); with @p direct also those
+    /// through the positions and the normal (add_direct_gradients(): once,
+    /// on the rank that owns j).
     void
     add_aggregate_terms(const Pair                                     &pair,
                         const unsigned int                              j,
                         const CondensedNodes                           &nodes,
                         std::map<unsigned int, std::array<double, 10>> &g,
+                        const bool                                      direct,
                         const dealii::AffineConstraints<double> &constraints,
                         const AssemblyTargets                   &targets) const;
+
+    /// Where linearise_operators() leaves the derivatives of D and M.
+    enum class GradientShare
+    {
+      /// Summed on the ranks that own the nodes of `needed`.
+      complete,
+      /// Each rank's share where it was made.
+      partial
+    };
 
     /// Adds @p weight times the rows @p rows of the tangent (read before
     /// any change) to the row of @p dof, through @p constraints (a
@@ -412,15 +437,24 @@ namespace DuctileContact
     /// tangent to @p targets (@p forces: f_j of the needed nodes). Keys of
     /// @p gradients: 3 node + c, master nodes after the slave nodes.
     /// On several ranks the face pairs that any rank needs are split into
-    /// equal shares, integrated where they fall, and the partial gradients
-    /// sent to the ranks that need them: the slave nodes of a surface are
+    /// shares, integrated where they fall, and the partial gradients sent
+    /// to the ranks that need them: the slave nodes of a surface are
     /// mostly owned by one rank, which would otherwise do all of the work.
-    void
+    /// The shares even out the work of the integration and of what each
+    /// rank does afterwards with its @p rows_after slave rows (the
+    /// condensation of a node costs about a tenth of a face pair's
+    /// integration, measured on prm/two_bodies.prm). With
+    /// GradientShare::partial the gradients stay where they were made.
+    /// Returns the nodes whose gradients this rank holds (all of them, or
+    /// its share), i.e. @p needed or the union of every rank's.
+    std::vector<bool>
     linearise_operators(
       const Pair                                                  &pair,
       const std::vector<bool>                                     &needed,
       const std::vector<dealii::Tensor<1, dim>>                   &forces,
       const bool                                                   slave_rows,
+      const unsigned int                                           rows_after,
+      const GradientShare                                          share,
       const dealii::AffineConstraints<double>                     &constraints,
       const AssemblyTargets                                       &targets,
       std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
@@ -451,8 +485,9 @@ namespace DuctileContact
                          const bool normal = true);
 
     /// Semi-smooth Newton: adds the aggregate derivatives of every hanging
-    /// slave node that a node of @p owned is a parent of, times its
-    /// weight, to that parent's (fold_hanging_nodes()).
+    /// slave node (this rank's share of them), times its weight, to its
+    /// parents' (fold_hanging_nodes()), and those through its positions to
+    /// the parents in @p owned.
     static void
     fold_hanging_gradients(
       const Pair                                                  &pair,

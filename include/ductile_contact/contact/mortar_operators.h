@@ -12,12 +12,25 @@ namespace DuctileContact
   /// (27 + 3 i + c).
   constexpr unsigned int face_pair_coordinates = 54;
 
+  /// Which slave weights a face pair's D holds.
+  enum class SlaveWeights
+  {
+    /// D_ik for every slave node pair.
+    full,
+    /// The row sums only: D_ii holds sum_k D_ik = int Phi_i dA (over the
+    /// overlap) and the other entries are zero. This is all that D lumped
+    /// to its row's node needs (the semi-smooth Newton enforcement,
+    /// contact_problem.h), at a fraction of the cost.
+    lumped
+  };
+
   /// The mortar operators of one slave/master face pair and, on request,
   /// their derivatives with respect to the 54 face coordinates.
   struct FacePairOperators
   {
     /// D_ik = int Phi_i N_k dA, M_il = int Phi_i (N_l o chi) dA over the
-    /// overlap (i, k slave nodes, l master nodes) [m^2].
+    /// overlap (i, k slave nodes, l master nodes) [m^2]; D as SlaveWeights
+    /// says.
     std::array<std::array<double, 9>, 9> D, M;
     /// dD_ik / dX_a and dM_il / dX_a [m].
     std::array<std::array<std::array<double, face_pair_coordinates>, 9>, 9> dD,
@@ -45,7 +58,9 @@ namespace DuctileContact
   class MortarFace
   {
   public:
-    MortarFace(const Quad9 &slave, const bool dual);
+    MortarFace(const Quad9       &slave,
+               const bool         dual,
+               const SlaveWeights weights = SlaveWeights::full);
 
     /// Operators of this face with @p master; false when the faces do not
     /// overlap (then @p out is not touched).
@@ -60,6 +75,7 @@ namespace DuctileContact
 
     Quad9                                slave;
     bool                                 dual;
+    SlaveWeights                         weights;
     std::array<std::array<double, 9>, 9> coefficients;
     /// Made by the first integrate() with derivatives and kept for the
     /// face's other pairs: they depend on the slave face alone.
