@@ -9,6 +9,7 @@
 #include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/contact/contact_writer.h>
 #include <ductile_contact/contact/mortar_operators.h>
+#include <ductile_contact/contact/mortar_segments.h>
 #include <ductile_contact/core/input_error.h>
 
 #include <algorithm>
@@ -385,8 +386,38 @@ namespace DuctileContact
 
 
 
+  std::vector<std::pair<unsigned int, unsigned int>>
+  ContactProblem::close_face_pairs(const Pair &pair)
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> close;
+    for (unsigned int f = 0; f < pair.slave.faces.size(); ++f)
+      {
+        if (pair.candidates[f].empty())
+          continue;
+        // Only candidates whose current box comes within half a slave face
+        // of this face's box can overlap it (an open gap wider than that
+        // is not in contact in any case).
+        const auto slave_box =
+          face_box(pair.slave, f, 0.5 * pair.face_size).get_boundary_points();
+        for (const unsigned int c : pair.candidates[f])
+          {
+            const auto master_box =
+              face_box(pair.master, c, 0.).get_boundary_points();
+            bool apart = false;
+            for (unsigned int d = 0; d < dim; ++d)
+              apart = apart || slave_box.first[d] > master_box.second[d] ||
+                      master_box.first[d] > slave_box.second[d];
+            if (!apart)
+              close.emplace_back(f, c);
+          }
+      }
+    return close;
+  }
+
+
+
   void
-  ContactProblem::integrate(Pair &pair)
+  ContactProblem::integrate(Pair &pair, const bool derivatives)
   {
     const ContactSurface &slave = pair.slave, &master = pair.master;
     const unsigned int    n = slave.nodes.size();
@@ -413,44 +444,90 @@ namespace DuctileContact
         pair.aggregates[j].normal = normal_sum[j] / pair.normal_length[j];
       }
 
-    // Segment-based D and M of every overlapping face pair.
-    const auto operators = std::make_unique<FacePairOperators>();
-    for (unsigned int f = 0; f < slave.faces.size(); ++f)
+    // Segment-based D and M of every overlapping face pair: each rank
+    // integrates an equal share, and all gather the operators (in their
+    // order). Nothing is gained by giving the rank that owns the slave
+    // nodes fewer: its condensation (condense()) starts after the gather.
+    std::vector<std::pair<unsigned int, unsigned int>> close =
+      close_face_pairs(pair);
+    // With derivatives the clipping alone first (every rank): a pair that
+    // does not overlap costs little in double, but as much as one that
+    // does with derivatives, and the shares should hold equal work.
+    if (derivatives)
+      close.erase(std::remove_if(close.begin(),
+                                 close.end(),
+                                 [&](const auto &fc) {
+                                   return !faces_may_overlap(
+                                     pair.slave_faces[fc.first],
+                                     master.current_face(fc.second));
+                                 }),
+                  close.end());
+    const MPI_Comm comm         = discretisation.dof_handler.get_communicator();
+    const auto [begin, end]     = share(close.size(), comm);
+    const SlaveWeights  weights = pair.slave_weights();
+    const unsigned int  n_d     = weights == SlaveWeights::lumped ? 9 : 81;
+    std::vector<double> mine;
+    pair.linearised_here = derivatives;
+    pair.linearised_pairs.clear();
+    const auto                  local = std::make_unique<FacePairOperators>();
+    std::unique_ptr<MortarFace> face;
+    unsigned int                face_index = numbers::invalid_unsigned_int;
+    for (std::size_t q = begin; q < end; ++q)
       {
-        if (pair.candidates[f].empty())
-          continue;
-        const MortarFace face(pair.slave_faces[f],
-                              pair.dual,
-                              pair.slave_weights());
-        // Exact check first: only candidates whose current box comes within
-        // half a slave face of this face's box can overlap it (an open gap
-        // wider than that is not in contact in any case).
-        const auto slave_box =
-          face_box(slave, f, 0.5 * pair.face_size).get_boundary_points();
-        for (const unsigned int c : pair.candidates[f])
+        const auto [f, c] = close[q];
+        if (f != face_index)
           {
-            const auto master_box =
-              face_box(master, c, 0.).get_boundary_points();
-            bool apart = false;
-            for (unsigned int d = 0; d < dim; ++d)
-              apart = apart || slave_box.first[d] > master_box.second[d] ||
-                      master_box.first[d] > slave_box.second[d];
-            if (apart ||
-                !face.integrate(master.current_face(c), *operators, false))
-              continue;
-            pair.overlaps.emplace_back(f, c);
-            for (unsigned int i = 0; i < 9; ++i)
-              {
-                const unsigned int j = slave.faces[f].nodes[i];
-                for (unsigned int k = 0; k < 9; ++k)
-                  {
-                    if (k == i || !pair.semi_smooth)
-                      pair.D[j][slave.faces[f].nodes[k]] += operators->D[i][k];
-                    pair.M[j][master.faces[c].nodes[k]] += operators->M[i][k];
-                  }
-              }
+            face       = std::make_unique<MortarFace>(pair.slave_faces[f],
+                                                pair.dual,
+                                                weights);
+            face_index = f;
           }
+        const Quad9       master_face = master.current_face(c);
+        const std::size_t stored      = pair.linearised_pairs.size();
+        if (derivatives && pair.linearised_operators.size() <= stored)
+          pair.linearised_operators.resize(stored + 1);
+        FacePairOperators &operators =
+          derivatives ? pair.linearised_operators[stored] : *local;
+        if (!face->integrate(master_face, operators, derivatives))
+          continue;
+        if (derivatives)
+          pair.linearised_pairs.push_back(mine.size()); // made global below
+        mine.push_back(f);
+        mine.push_back(c);
+        for (unsigned int i = 0; i < 9; ++i)
+          for (unsigned int k = 0; k < 9; ++k)
+            if (n_d == 81 || k == i)
+              mine.push_back(operators.D[i][k]);
+        for (unsigned int i = 0; i < 9; ++i)
+          for (unsigned int k = 0; k < 9; ++k)
+            mine.push_back(operators.M[i][k]);
       }
+    const std::size_t record = 2 + n_d + 81;
+    const auto        all    = Utilities::MPI::all_gather(comm, mine);
+    std::size_t       before = 0;
+    for (unsigned int r = 0; r < Utilities::MPI::this_mpi_process(comm); ++r)
+      before += all[r].size() / record;
+    for (std::size_t &k : pair.linearised_pairs)
+      k = before + k / record;
+    for (const auto &data : all)
+      for (std::size_t p = 0; p < data.size(); p += record)
+        {
+          const unsigned int f = data[p], c = data[p + 1];
+          pair.overlaps.emplace_back(f, c);
+          const double *D = &data[p + 2], *M = D + n_d;
+          for (unsigned int i = 0; i < 9; ++i)
+            {
+              const unsigned int j = slave.faces[f].nodes[i];
+              for (unsigned int k = 0; k < 9; ++k)
+                {
+                  if (n_d == 81)
+                    pair.D[j][slave.faces[f].nodes[k]] += D[9 * i + k];
+                  else if (k == i)
+                    pair.D[j][j] += D[i];
+                  pair.M[j][master.faces[c].nodes[k]] += M[9 * i + k];
+                }
+            }
+        }
 
     // Aggregates.
     for (unsigned int j = 0; j < n; ++j)
@@ -578,13 +655,17 @@ namespace DuctileContact
                            const AssemblyTargets           &targets)
   {
     AffineConstraints<double> all_constraints;
-    extend_constraints(constraints, all_constraints);
+    {
+      extend_constraints(constraints, all_constraints);
+    }
     bool semi_smooth = false, penalty = false;
     for (Pair &pair : data)
       {
         pair.slave.update(u, discretisation);
         pair.master.update(u, discretisation);
-        integrate(pair);
+        {
+          integrate(pair, targets.tangent != nullptr && pair.semi_smooth);
+        }
         semi_smooth = semi_smooth || pair.semi_smooth;
         if (!pair.semi_smooth)
           {
@@ -603,8 +684,12 @@ namespace DuctileContact
     // The condensation reads the complete bulk rows of the slave nodes.
     for (Pair &pair : data)
       if (pair.semi_smooth)
-        condense(pair, all_constraints, targets);
-    compress(targets);
+        {
+          condense(pair, all_constraints, targets);
+        }
+    {
+      compress(targets);
+    }
   }
 
 

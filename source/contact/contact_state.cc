@@ -273,7 +273,7 @@ namespace DuctileContact
         std::vector<std::vector<unsigned int>> step_candidates =
           std::move(pair.candidates);
         pair.candidates = search(pair);
-        integrate(pair);
+        integrate(pair, false);
         pair.candidates = std::move(step_candidates);
 
         const auto &dofs    = discretisation.locally_owned_dofs;

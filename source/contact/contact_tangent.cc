@@ -65,56 +65,6 @@ namespace DuctileContact
       return shared;
     }
 
-    /// This rank's contiguous share [first, second) of the face pairs
-    /// @p overlaps whose slave face has a node in @p any (contiguous: the
-    /// pairs of one slave face share its MortarFace), sized so that every
-    /// rank's integration plus its @p rows_after rows of later work (a
-    /// row counted as row_cost face pairs) come out even.
-    std::pair<std::size_t, std::size_t>
-    face_pair_share(
-      const std::vector<std::pair<unsigned int, unsigned int>> &overlaps,
-      const ContactSurface                                     &slave,
-      const std::vector<bool>                                  &any,
-      const unsigned int                                        rows_after,
-      const MPI_Comm                                            comm)
-    {
-      constexpr double         row_cost = 0.1;
-      std::vector<std::size_t> touching;
-      for (std::size_t i = 0; i < overlaps.size(); ++i)
-        {
-          const auto &nodes = slave.faces[overlaps[i].first].nodes;
-          if (std::any_of(nodes.begin(),
-                          nodes.end(),
-                          [&](const unsigned int j) { return any[j]; }))
-            touching.push_back(i);
-        }
-      // Per rank: the pairs it takes = an even share of all the work less
-      // its own rows, the shares then scaled to the pairs there are.
-      const std::vector<unsigned int> rows =
-        Utilities::MPI::all_gather(comm, rows_after);
-      const std::size_t n_ranks = rows.size();
-      double            total   = touching.size();
-      for (const unsigned int r : rows)
-        total += row_cost * r;
-      std::vector<double> wanted(n_ranks);
-      double              sum = 0.;
-      for (std::size_t r = 0; r < n_ranks; ++r)
-        sum += wanted[r] = std::max(0., total / n_ranks - row_cost * rows[r]);
-      const std::size_t rank   = Utilities::MPI::this_mpi_process(comm);
-      double            before = 0.;
-      for (std::size_t r = 0; r < rank; ++r)
-        before += wanted[r];
-      const auto bound = [&](const double w) {
-        return static_cast<std::size_t>(
-          std::lround(sum > 0. ? touching.size() * w / sum : 0.));
-      };
-      const std::size_t begin = bound(before);
-      const std::size_t end   = bound(before + wanted[rank]);
-      if (begin >= end)
-        return {0, 0};
-      return {touching[begin], touching[end - 1] + 1};
-    }
-
     /// Sends the partial gradients of the nodes other ranks need to them,
     /// drops those this rank does not need (@p needed) and adds what the
     /// others computed for its own.
@@ -164,45 +114,84 @@ namespace DuctileContact
 
 
 
+  std::pair<std::size_t, std::size_t>
+  ContactProblem::face_pair_share(const Pair              &pair,
+                                  const std::vector<bool> &any,
+                                  const MPI_Comm           comm)
+  {
+    std::vector<std::size_t> touching;
+    for (std::size_t i = 0; i < pair.overlaps.size(); ++i)
+      {
+        const auto &nodes = pair.slave.faces[pair.overlaps[i].first].nodes;
+        if (std::any_of(nodes.begin(), nodes.end(), [&](const unsigned int j) {
+              return any[j];
+            }))
+          touching.push_back(i);
+      }
+    const auto [begin, end] = share(touching.size(), comm);
+    if (begin == end)
+      return {0, 0};
+    return {touching[begin], touching[end - 1] + 1};
+  }
+
+
+
+  std::pair<std::size_t, std::size_t>
+  ContactProblem::share(const std::size_t n_items, const MPI_Comm comm)
+  {
+    const std::size_t rank    = Utilities::MPI::this_mpi_process(comm);
+    const std::size_t n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    return {n_items * rank / n_ranks, n_items * (rank + 1) / n_ranks};
+  }
+
+
+
   std::vector<bool>
   ContactProblem::linearise_operators(
     const Pair                        &pair,
     const std::vector<bool>           &needed,
     const std::vector<Tensor<1, dim>> &forces,
     const bool                         slave_rows,
-    const unsigned int                 rows_after,
     const GradientShare                share,
     const AffineConstraints<double>   &constraints,
     const AssemblyTargets             &targets,
     Gradients                         &gradients) const
   {
+    Assert(!pair.linearised_here || share == GradientShare::partial,
+           ExcInternalError());
     const MPI_Comm comm = discretisation.dof_handler.get_communicator();
-    if (Utilities::MPI::n_mpi_processes(comm) == 1)
-      {
-        integrate_face_pairs(pair,
-                             needed,
-                             forces,
-                             slave_rows,
-                             {0, pair.overlaps.size()},
-                             constraints,
-                             targets,
-                             gradients);
-        return needed;
-      }
+    const bool     one  = Utilities::MPI::n_mpi_processes(comm) == 1;
     // Every rank integrates a share of the face pairs that any rank needs,
     // whichever rank owns their nodes.
-    const SharedNeeds shared = share_needs(needed, forces, comm);
-    integrate_face_pairs(
-      pair,
-      shared.any,
-      shared.forces,
-      slave_rows,
-      face_pair_share(pair.overlaps, pair.slave, shared.any, rows_after, comm),
-      constraints,
-      targets,
-      gradients);
-    if (share == GradientShare::partial)
-      return shared.any;
+    SharedNeeds shared;
+    if (!one)
+      shared = share_needs(needed, forces, comm);
+    const std::vector<bool>           &any = one ? needed : shared.any;
+    const std::vector<Tensor<1, dim>> &all = one ? forces : shared.forces;
+    if (pair.linearised_here)
+      for (std::size_t k = 0; k < pair.linearised_pairs.size(); ++k)
+        add_face_pair_terms(pair,
+                            pair.linearised_pairs[k],
+                            pair.linearised_operators[k],
+                            any,
+                            all,
+                            slave_rows,
+                            constraints,
+                            targets,
+                            gradients);
+    else
+      integrate_face_pairs(pair,
+                           any,
+                           all,
+                           slave_rows,
+                           one ? std::make_pair(std::size_t(0),
+                                                pair.overlaps.size())
+                               : face_pair_share(pair, any, comm),
+                           constraints,
+                           targets,
+                           gradients);
+    if (one || share == GradientShare::partial)
+      return any;
     exchange_gradients(shared, needed, comm, gradients);
     return needed;
   }
@@ -221,21 +210,13 @@ namespace DuctileContact
     std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
     const
   {
-    const ContactSurface  &slave = pair.slave, &master = pair.master;
-    const unsigned int     ns            = slave.nodes.size();
-    constexpr unsigned int n_coordinates = face_pair_coordinates;
-    const auto             operators = std::make_unique<FacePairOperators>();
+    const auto operators = std::make_unique<FacePairOperators>();
     std::unique_ptr<MortarFace> face;
     unsigned int                face_index = numbers::invalid_unsigned_int;
-    FullMatrix<double>          matrix(n_coordinates, n_coordinates);
-    Vector<double>              rhs(n_coordinates), f_int(n_coordinates);
-    std::vector<types::global_dof_index>    indices(n_coordinates);
-    std::array<unsigned int, n_coordinates> keys;
     for (std::size_t i = range.first; i < range.second; ++i)
       {
         const auto [f, c]   = pair.overlaps[i];
-        const auto &s_nodes = slave.faces[f].nodes;
-        const auto &m_nodes = master.faces[c].nodes;
+        const auto &s_nodes = pair.slave.faces[f].nodes;
         if (std::none_of(s_nodes.begin(),
                          s_nodes.end(),
                          [&](const unsigned int j) { return needed[j]; }))
@@ -247,64 +228,106 @@ namespace DuctileContact
                                                 pair.slave_weights());
             face_index = f;
           }
-        face->integrate(master.current_face(c), *operators, true);
+        face->integrate(pair.master.current_face(c), *operators, true);
+        add_face_pair_terms(pair,
+                            i,
+                            *operators,
+                            needed,
+                            forces,
+                            slave_rows,
+                            constraints,
+                            targets,
+                            gradients);
+      }
+  }
+
+
+
+  void
+  ContactProblem::add_face_pair_terms(
+    const Pair                                                  &pair,
+    const std::size_t                                            overlap,
+    const FacePairOperators                                     &operators,
+    const std::vector<bool>                                     &needed,
+    const std::vector<Tensor<1, dim>>                           &forces,
+    const bool                                                   slave_rows,
+    const AffineConstraints<double>                             &constraints,
+    const AssemblyTargets                                       &targets,
+    std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
+    const
+  {
+    const ContactSurface  &slave = pair.slave, &master = pair.master;
+    const unsigned int     ns            = slave.nodes.size();
+    constexpr unsigned int n_coordinates = face_pair_coordinates;
+    const auto [f, c]                    = pair.overlaps[overlap];
+    const auto &s_nodes                  = slave.faces[f].nodes;
+    const auto &m_nodes                  = master.faces[c].nodes;
+    if (std::none_of(s_nodes.begin(), s_nodes.end(), [&](const unsigned int j) {
+          return needed[j];
+        }))
+      return;
+    FullMatrix<double> matrix(n_coordinates, n_coordinates);
+    Vector<double>     rhs(n_coordinates), f_int(n_coordinates);
+    std::vector<types::global_dof_index>    indices(n_coordinates);
+    std::array<unsigned int, n_coordinates> keys;
+    for (unsigned int a = 0; a < n_coordinates; ++a)
+      {
+        keys[a]    = a < 27 ? 3 * s_nodes[a / 3] + a % 3
+                            : 3 * (ns + m_nodes[(a - 27) / 3]) + a % 3;
+        indices[a] = coordinate_dof(pair, keys[a]);
+      }
+    matrix = 0.;
+    for (unsigned int i = 0; i < 9; ++i)
+      {
+        const unsigned int j = s_nodes[i];
+        if (!needed[j])
+          continue;
+        const Tensor<1, dim> &force = forces[j];
+        auto                 &g     = gradients[j];
         for (unsigned int a = 0; a < n_coordinates; ++a)
           {
-            keys[a]    = a < 27 ? 3 * s_nodes[a / 3] + a % 3
-                                : 3 * (ns + m_nodes[(a - 27) / 3]) + a % 3;
-            indices[a] = coordinate_dof(pair, keys[a]);
-          }
-        matrix = 0.;
-        for (unsigned int i = 0; i < 9; ++i)
-          {
-            const unsigned int j = s_nodes[i];
-            if (!needed[j])
-              continue;
-            const Tensor<1, dim> &force = forces[j];
-            auto                 &g     = gradients[j];
-            for (unsigned int a = 0; a < n_coordinates; ++a)
+            std::array<double, 10> &e = g[keys[a]];
+            for (unsigned int k = 0; k < 9; ++k)
               {
-                std::array<double, 10> &e = g[keys[a]];
-                for (unsigned int k = 0; k < 9; ++k)
+                if (pair.semi_smooth && k != i)
+                  continue; // lumped: D_ii holds the row sum
+                const double       d    = operators.dD[i][k][a];
+                const unsigned int node = pair.semi_smooth ? j : s_nodes[k];
+                e[0] += d;
+                for (unsigned int r = 0; r < dim; ++r)
                   {
-                    if (pair.semi_smooth && k != i)
-                      continue; // lumped: D_ii holds the row sum
-                    const double       d    = operators->dD[i][k][a];
-                    const unsigned int node = pair.semi_smooth ? j : s_nodes[k];
-                    e[0] += d;
-                    for (unsigned int r = 0; r < dim; ++r)
-                      {
-                        e[1 + r] -= d * slave.nodes[node].current[r];
-                        e[4 + r] += d * (slave.nodes[node].current[r] -
-                                         pair.slave_committed[node][r]);
-                        if (slave_rows)
-                          matrix(3 * k + r, a) += d * force[r];
-                      }
+                    e[1 + r] -= d * slave.nodes[node].current[r];
+                    e[4 + r] += d * (slave.nodes[node].current[r] -
+                                     pair.slave_committed[node][r]);
+                    if (slave_rows)
+                      matrix(3 * k + r, a) += d * force[r];
                   }
-                for (unsigned int l = 0; l < 9; ++l)
+              }
+            for (unsigned int l = 0; l < 9; ++l)
+              {
+                const double       m    = operators.dM[i][l][a];
+                const unsigned int node = m_nodes[l];
+                for (unsigned int r = 0; r < dim; ++r)
                   {
-                    const double       m    = operators->dM[i][l][a];
-                    const unsigned int node = m_nodes[l];
-                    for (unsigned int r = 0; r < dim; ++r)
-                      {
-                        e[1 + r] += m * master.nodes[node].current[r];
-                        e[4 + r] -= m * (master.nodes[node].current[r] -
-                                         pair.master_committed[node][r]);
-                        matrix(27 + 3 * l + r, a) -= m * force[r];
-                      }
+                    e[1 + r] += m * master.nodes[node].current[r];
+                    e[4 + r] -= m * (master.nodes[node].current[r] -
+                                     pair.master_committed[node][r]);
+                    matrix(27 + 3 * l + r, a) -= m * force[r];
                   }
               }
           }
-        rhs = 0.;
-        scatter(matrix,
-                rhs,
-                f_int,
-                indices,
-                constraints,
-                discretisation.hanging_node_constraints,
-                targets);
       }
+    rhs = 0.;
+    scatter(matrix,
+            rhs,
+            f_int,
+            indices,
+            constraints,
+            discretisation.hanging_node_constraints,
+            targets);
   }
+
+
 
   void
   ContactProblem::add_direct_gradients(
@@ -384,7 +407,6 @@ namespace DuctileContact
                             needed,
                             forces,
                             true,
-                            0,
                             GradientShare::complete,
                             constraints,
                             targets,

@@ -235,6 +235,88 @@ namespace DuctileContact
 
 
 
+  namespace
+  {
+    /// One overlap of a slave and a master sub-quad, in the auxiliary
+    /// plane of the slave sub-quad (mortar_points()).
+    template <typename Number>
+    struct SubQuadOverlap
+    {
+      unsigned int              slave_quad, master_quad;
+      Vec<Number>               centre, n0, t1, t2;
+      std::vector<Vec2<Number>> polygon; ///< counter-clockwise
+    };
+
+    /**
+     * Calls @p visit for every pair of a slave and a master sub-quad that
+     * face each other and overlap in the slave sub-quad's plane (the
+     * clipping of mortar_points()), until it returns false.
+     */
+    template <typename Number, typename Visitor>
+    void
+    for_each_overlap(const FaceCoordinates<Number> &slave,
+                     const FaceCoordinates<Number> &master,
+                     const Visitor                 &visit)
+    {
+      SubQuadOverlap<Number> o;
+      for (unsigned int sq = 0; sq < 4; ++sq)
+        {
+          const auto s_nodes = sub_quad(sq % 2, sq / 2);
+          o.slave_quad       = sq;
+          o.centre           = Vec<Number>{{0., 0., 0.}};
+          for (const unsigned int i : s_nodes)
+            for (unsigned int c = 0; c < dim; ++c)
+              o.centre[c] += 0.25 * slave[i][c];
+          o.n0 = cross(minus(slave[s_nodes[2]], slave[s_nodes[0]]),
+                       minus(slave[s_nodes[3]], slave[s_nodes[1]]));
+          normalise(o.n0);
+          o.t1               = minus(slave[s_nodes[1]], slave[s_nodes[0]]);
+          const Number t1_n0 = dot(o.t1, o.n0);
+          for (unsigned int c = 0; c < dim; ++c)
+            o.t1[c] -= t1_n0 * o.n0[c];
+          normalise(o.t1);
+          o.t2                = cross(o.n0, o.t1);
+          const auto in_plane = [&](const Vec<Number> &p) {
+            const Vec<Number> d = minus(p, o.centre);
+            return Vec2<Number>{{dot(d, o.t1), dot(d, o.t2)}};
+          };
+
+          std::vector<Vec2<Number>> s_polygon;
+          for (const unsigned int i : s_nodes)
+            s_polygon.push_back(in_plane(slave[i]));
+          const double s_area = value_of(area_of(s_polygon));
+          if (!(s_area > 0.))
+            continue; // degenerate (or inverted) slave sub-quad
+
+          for (unsigned int mq = 0; mq < 4; ++mq)
+            {
+              const auto        m_nodes = sub_quad(mq % 2, mq / 2);
+              const Vec<Number> n_m =
+                cross(minus(master[m_nodes[2]], master[m_nodes[0]]),
+                      minus(master[m_nodes[3]], master[m_nodes[1]]));
+              if (value_of(dot(n_m, o.n0)) >= 0.)
+                continue; // the sub-quads do not face each other
+              std::vector<Vec2<Number>> m_polygon;
+              for (const unsigned int i : m_nodes)
+                m_polygon.push_back(in_plane(master[i]));
+              // The master faces the other way: clockwise in this plane.
+              std::reverse(m_polygon.begin(), m_polygon.end());
+              if (!(value_of(area_of(m_polygon)) > 0.))
+                continue;
+              o.polygon = clip(m_polygon, s_polygon, 1e-10 * std::sqrt(s_area));
+              if (o.polygon.size() < 3 ||
+                  !(value_of(area_of(o.polygon)) > 1e-12 * s_area))
+                continue;
+              o.master_quad = mq;
+              if (!visit(o))
+                return;
+            }
+        }
+    }
+  } // namespace
+
+
+
   template <typename Number>
   std::vector<MortarPointOf<Number>>
   mortar_points(const FaceCoordinates<Number> &slave,
@@ -242,94 +324,64 @@ namespace DuctileContact
   {
     const Quad9 slave_face = values_of(slave), master_face = values_of(master);
     std::vector<MortarPointOf<Number>> points;
-    for (unsigned int sq = 0; sq < 4; ++sq)
-      {
-        const auto  s_nodes = sub_quad(sq % 2, sq / 2);
-        Vec<Number> centre{{0., 0., 0.}};
-        for (const unsigned int i : s_nodes)
-          for (unsigned int c = 0; c < dim; ++c)
-            centre[c] += 0.25 * slave[i][c];
-        Vec<Number> n0 = cross(minus(slave[s_nodes[2]], slave[s_nodes[0]]),
-                               minus(slave[s_nodes[3]], slave[s_nodes[1]]));
-        normalise(n0);
-        Vec<Number>  t1    = minus(slave[s_nodes[1]], slave[s_nodes[0]]);
-        const Number t1_n0 = dot(t1, n0);
-        for (unsigned int c = 0; c < dim; ++c)
-          t1[c] -= t1_n0 * n0[c];
-        normalise(t1);
-        const Vec<Number> t2       = cross(n0, t1);
-        const auto        in_plane = [&](const Vec<Number> &p) {
-          const Vec<Number> d = minus(p, centre);
-          return Vec2<Number>{{dot(d, t1), dot(d, t2)}};
-        };
-
-        std::vector<Vec2<Number>> s_polygon;
-        for (const unsigned int i : s_nodes)
-          s_polygon.push_back(in_plane(slave[i]));
-        const double s_area = value_of(area_of(s_polygon));
-        if (!(s_area > 0.))
-          continue; // degenerate (or inverted) slave sub-quad
-        const Point<2> s_start(0.25 * (sq % 2) + 0.25, 0.25 * (sq / 2) + 0.25);
-
-        for (unsigned int mq = 0; mq < 4; ++mq)
-          {
-            const auto        m_nodes = sub_quad(mq % 2, mq / 2);
-            const Vec<Number> n_m =
-              cross(minus(master[m_nodes[2]], master[m_nodes[0]]),
-                    minus(master[m_nodes[3]], master[m_nodes[1]]));
-            if (value_of(dot(n_m, n0)) >= 0.)
-              continue; // the sub-quads do not face each other
-            std::vector<Vec2<Number>> m_polygon;
-            for (const unsigned int i : m_nodes)
-              m_polygon.push_back(in_plane(master[i]));
-            // The master faces the other way: clockwise in this plane.
-            std::reverse(m_polygon.begin(), m_polygon.end());
-            if (!(value_of(area_of(m_polygon)) > 0.))
-              continue;
-            const std::vector<Vec2<Number>> overlap =
-              clip(m_polygon, s_polygon, 1e-10 * std::sqrt(s_area));
-            if (overlap.size() < 3)
-              continue;
-            if (!(value_of(area_of(overlap)) > 1e-12 * s_area))
-              continue;
-
-            Vec2<Number> centroid{{0., 0.}};
-            for (const Vec2<Number> &p : overlap)
-              for (unsigned int c = 0; c < 2; ++c)
-                centroid[c] += p[c] / static_cast<double>(overlap.size());
-            const Point<2> m_start(0.25 * (mq % 2) + 0.25,
-                                   0.25 * (mq / 2) + 0.25);
-            for (std::size_t e = 0; e < overlap.size(); ++e)
-              {
-                const Vec2<Number> &a      = overlap[e];
-                const Vec2<Number> &b      = overlap[(e + 1) % overlap.size()];
-                const Number triangle_area = 0.5 * orient(centroid, a, b);
-                if (!(value_of(triangle_area) > 0.))
-                  continue;
-                for (const TrianglePoint &g : triangle_rule())
-                  {
-                    Vec<Number> q = centre;
-                    for (unsigned int k = 0; k < 2; ++k)
-                      {
-                        const Number p =
-                          g.l0 * centroid[k] + g.l1 * a[k] + g.l2 * b[k];
-                        const Vec<Number> &t = k == 0 ? t1 : t2;
-                        for (unsigned int c = 0; c < dim; ++c)
-                          q[c] += p * t[c];
-                      }
-                    MortarPointOf<Number> point;
-                    if (!project(
-                          slave, slave_face, q, n0, s_start, point.slave) ||
-                        !project(
-                          master, master_face, q, n0, m_start, point.master))
-                      continue;
-                    point.weight = g.w * triangle_area;
-                    points.push_back(point);
-                  }
-              }
-          }
-      }
+    for_each_overlap(slave, master, [&](const SubQuadOverlap<Number> &o) {
+      const unsigned int sq = o.slave_quad, mq = o.master_quad;
+      const Point<2> s_start(0.25 * (sq % 2) + 0.25, 0.25 * (sq / 2) + 0.25);
+      const Point<2> m_start(0.25 * (mq % 2) + 0.25, 0.25 * (mq / 2) + 0.25);
+      const std::vector<Vec2<Number>> &overlap = o.polygon;
+      Vec2<Number>                     centroid{{0., 0.}};
+      for (const Vec2<Number> &p : overlap)
+        for (unsigned int c = 0; c < 2; ++c)
+          centroid[c] += p[c] / static_cast<double>(overlap.size());
+      for (std::size_t e = 0; e < overlap.size(); ++e)
+        {
+          const Vec2<Number> &a             = overlap[e];
+          const Vec2<Number> &b             = overlap[(e + 1) % overlap.size()];
+          const Number        triangle_area = 0.5 * orient(centroid, a, b);
+          if (!(value_of(triangle_area) > 0.))
+            continue;
+          for (const TrianglePoint &g : triangle_rule())
+            {
+              Vec<Number> q = o.centre;
+              for (unsigned int k = 0; k < 2; ++k)
+                {
+                  const Number p =
+                    g.l0 * centroid[k] + g.l1 * a[k] + g.l2 * b[k];
+                  const Vec<Number> &t = k == 0 ? o.t1 : o.t2;
+                  for (unsigned int c = 0; c < dim; ++c)
+                    q[c] += p * t[c];
+                }
+              MortarPointOf<Number> point;
+              if (!project(slave, slave_face, q, o.n0, s_start, point.slave) ||
+                  !project(master, master_face, q, o.n0, m_start, point.master))
+                continue;
+              point.weight = g.w * triangle_area;
+              points.push_back(point);
+            }
+        }
+      return true;
+    });
     return points;
+  }
+
+
+
+  bool
+  faces_may_overlap(const Quad9 &slave, const Quad9 &master)
+  {
+    FaceCoordinates<double> s, m;
+    for (unsigned int i = 0; i < 9; ++i)
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          s[i][c] = slave.x[i][c];
+          m[i][c] = master.x[i][c];
+        }
+    bool found = false;
+    for_each_overlap(s, m, [&](const SubQuadOverlap<double> &) {
+      found = true;
+      return false;
+    });
+    return found;
   }
 
 

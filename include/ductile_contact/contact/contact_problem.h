@@ -253,6 +253,12 @@ namespace DuctileContact
       std::vector<Quad9> slave_faces;
       /// (slave face, master face) pairs that overlap.
       std::vector<std::pair<unsigned int, unsigned int>> overlaps;
+      /// Whether integrate() kept derivatives: then this rank's share of
+      /// the face pairs, overlaps[linearised_pairs[k]], has its dD and dM
+      /// in linearised_operators[k] (the vector only grows, and is reused).
+      bool                           linearised_here = false;
+      std::vector<std::size_t>       linearised_pairs;
+      std::vector<FacePairOperators> linearised_operators;
       /// Per slave node: D_jk, M_jl, the aggregates (nodal_contact.h), the
       /// length of the summed face normals n_j is made from, the state.
       std::vector<std::map<unsigned int, double>> D, M;
@@ -307,9 +313,29 @@ namespace DuctileContact
     static std::vector<std::vector<unsigned int>>
     search(const Pair &pair);
 
+    /// The face pairs of @p pair whose current boxes come close enough to
+    /// overlap, by slave face.
+    static std::vector<std::pair<unsigned int, unsigned int>>
+    close_face_pairs(const Pair &pair);
+
     /// D, M, normals and aggregates of @p pair on its current geometry.
+    /// Every rank integrates a share of the face pairs (share(); with
+    /// @p derivatives it keeps their dD and dM for linearise_operators())
+    /// and all gather the operators. Collective.
     void
-    integrate(Pair &pair);
+    integrate(Pair &pair, const bool derivatives);
+
+    /// This rank's contiguous, equal share [first, second) of @p n_items
+    /// face pairs.
+    static std::pair<std::size_t, std::size_t>
+    share(const std::size_t n_items, const MPI_Comm comm);
+
+    /// This rank's share of the overlapping face pairs whose slave face has
+    /// a node in @p any, as [first, second) in pair.overlaps.
+    static std::pair<std::size_t, std::size_t>
+    face_pair_share(const Pair              &pair,
+                    const std::vector<bool> &any,
+                    const MPI_Comm           comm);
 
     /**
      * Semi-smooth Newton with hanging nodes on the slave surface: the
@@ -440,10 +466,7 @@ namespace DuctileContact
     /// shares, integrated where they fall, and the partial gradients sent
     /// to the ranks that need them: the slave nodes of a surface are
     /// mostly owned by one rank, which would otherwise do all of the work.
-    /// The shares even out the work of the integration and of what each
-    /// rank does afterwards with its @p rows_after slave rows (the
-    /// condensation of a node costs about a tenth of a face pair's
-    /// integration, measured on prm/two_bodies.prm). With
+    /// The derivatives integrate() kept are used where it made them. With
     /// GradientShare::partial the gradients stay where they were made.
     /// Returns the nodes whose gradients this rank holds (all of them, or
     /// its share), i.e. @p needed or the union of every rank's.
@@ -453,7 +476,6 @@ namespace DuctileContact
       const std::vector<bool>                                     &needed,
       const std::vector<dealii::Tensor<1, dim>>                   &forces,
       const bool                                                   slave_rows,
-      const unsigned int                                           rows_after,
       const GradientShare                                          share,
       const dealii::AffineConstraints<double>                     &constraints,
       const AssemblyTargets                                       &targets,
@@ -470,6 +492,23 @@ namespace DuctileContact
       const std::vector<dealii::Tensor<1, dim>>                   &forces,
       const bool                                                   slave_rows,
       const std::pair<std::size_t, std::size_t>                   &range,
+      const dealii::AffineConstraints<double>                     &constraints,
+      const AssemblyTargets                                       &targets,
+      std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
+      const;
+
+    /// The part of linearise_operators() of face pair
+    /// pair.overlaps[@p overlap] with its @p operators: the gradients of
+    /// the nodes of @p needed and the dD f_j (if @p slave_rows), dM f_j
+    /// terms.
+    void
+    add_face_pair_terms(
+      const Pair                                                  &pair,
+      const std::size_t                                            overlap,
+      const FacePairOperators                                     &operators,
+      const std::vector<bool>                                     &needed,
+      const std::vector<dealii::Tensor<1, dim>>                   &forces,
+      const bool                                                   slave_rows,
       const dealii::AffineConstraints<double>                     &constraints,
       const AssemblyTargets                                       &targets,
       std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)

@@ -51,6 +51,12 @@ namespace DuctileContact
   mortar_points(const FaceCoordinates<Number> &slave,
                 const FaceCoordinates<Number> &master);
 
+  /// Whether some sub-quads of the two faces face each other and overlap
+  /// in the plane (the clipping of mortar_points() without its
+  /// quadrature): false means mortar_points() has no point.
+  bool
+  faces_may_overlap(const Quad9 &slave, const Quad9 &master);
+
   /// mortar_points() on plain faces.
   struct MortarPoint
   {
