@@ -57,7 +57,8 @@ namespace DuctileContact
   SystemAssembler::assemble(const TrilinosWrappers::MPI::BlockVector &u,
                             const StepData                           &step,
                             const AffineConstraints<double> &constraints,
-                            const AssemblyTargets           &targets) const
+                            const AssemblyTargets           &targets,
+                            const bool                       finish) const
   {
     if (targets.tangent)
       *targets.tangent = 0;
@@ -75,7 +76,8 @@ namespace DuctileContact
     const AssemblyInfo info =
       run({&u, &step, &targets, nullptr, false}, constraints, nullptr);
 
-    compress(targets);
+    if (finish)
+      compress(targets);
     return info;
   }
 

@@ -17,6 +17,7 @@
 #include <iterator>
 #include <memory>
 #include <set>
+#include <unordered_set>
 
 namespace DuctileContact
 {
@@ -121,6 +122,42 @@ namespace DuctileContact
     for (const Pair &pair : data)
       if (pair.semi_smooth)
         check_condensable(pair);
+    bulk_rows_here = slave_rows_complete_here();
+  }
+
+
+
+  bool
+  ContactProblem::slave_rows_complete_here() const
+  {
+    // The DoFs of the slave nodes this rank condenses.
+    std::unordered_set<types::global_dof_index> rows;
+    for (const Pair &pair : data)
+      if (pair.semi_smooth)
+        for (const auto &node : pair.slave.nodes)
+          if (discretisation.locally_owned_dofs.is_element(node.dofs[0]))
+            rows.insert(node.dofs.begin(), node.dofs.end());
+    // A ghost cell adds to such a row if it has the DoF or one whose
+    // hanging-node constraint sends its row there.
+    const auto &hanging = discretisation.hanging_node_constraints;
+    bool        here    = true;
+    std::vector<types::global_dof_index> cell_dofs;
+    for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
+      {
+        if (!cell->is_ghost())
+          continue;
+        cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
+        cell->get_dof_indices(cell_dofs);
+        for (const auto dof : cell_dofs)
+          if (const auto *parents = hanging.get_constraint_entries(dof))
+            for (const auto &parent : *parents)
+              here = here && rows.count(parent.first) == 0;
+          else
+            here = here && rows.count(dof) == 0;
+      }
+    return Utilities::MPI::min(here ? 1 : 0,
+                               discretisation.dof_handler.get_communicator()) ==
+           1;
   }
 
 
@@ -655,17 +692,13 @@ namespace DuctileContact
                            const AssemblyTargets           &targets)
   {
     AffineConstraints<double> all_constraints;
-    {
-      extend_constraints(constraints, all_constraints);
-    }
+    extend_constraints(constraints, all_constraints);
     bool semi_smooth = false, penalty = false;
     for (Pair &pair : data)
       {
         pair.slave.update(u, discretisation);
         pair.master.update(u, discretisation);
-        {
-          integrate(pair, targets.tangent != nullptr && pair.semi_smooth);
-        }
+        integrate(pair, targets.tangent != nullptr && pair.semi_smooth);
         semi_smooth = semi_smooth || pair.semi_smooth;
         if (!pair.semi_smooth)
           {
@@ -674,22 +707,23 @@ namespace DuctileContact
             assemble_penalty(pair, all_constraints, targets);
           }
       }
-    // Only penalty rows were added here: the bulk assembly compressed its
-    // own (a compress of nothing new cost ~8 ms per tangent on
-    // prm/two_bodies.prm).
+    // Without semi-smooth Newton the one compress of the assembly (the
+    // bulk assembly leaves its terms to it: needs_compressed_bulk()). Each
+    // compress costs ~8 ms per tangent on prm/two_bodies.prm, with or
+    // without new entries.
+    if (!semi_smooth)
+      {
+        compress(targets);
+        return;
+      }
     if (penalty)
       compress(targets);
-    if (!semi_smooth)
-      return;
-    // The condensation reads the complete bulk rows of the slave nodes.
+    // The condensation reads the complete bulk rows of the slave nodes:
+    // compressed, or complete where they are (slave_rows_complete_here()).
     for (Pair &pair : data)
       if (pair.semi_smooth)
-        {
-          condense(pair, all_constraints, targets);
-        }
-    {
-      compress(targets);
-    }
+        condense(pair, all_constraints, targets);
+    compress(targets);
   }
 
 

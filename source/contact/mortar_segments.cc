@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <type_traits>
 
 namespace DuctileContact
 {
@@ -179,11 +180,13 @@ namespace DuctileContact
      * on the values (Quad9::project_along), then one Newton correction in
      * Number, which carries the derivatives dxi = -J^-1 dr (implicit
      * function theorem, J = [x_xi, x_eta, -d] at the solution). The point
-     * is clamped to the face.
+     * is clamped to the face. With derivatives, x[i][c] is the independent
+     * variable @p first + 3 i + c.
      */
     template <typename Number>
     bool
     project(const FaceCoordinates<Number> &x,
+            const unsigned int             first,
             const Quad9                   &face,
             const Vec<Number>             &q,
             const Vec<Number>             &d,
@@ -216,8 +219,21 @@ namespace DuctileContact
       for (unsigned int c = 0; c < dim; ++c)
         {
           r[c] = -q[c] - t * d[c];
-          for (unsigned int i = 0; i < 9; ++i)
-            r[c] += n[i] * x[i][c];
+          if constexpr (std::is_same_v<Number, ContactAD>)
+            {
+              // x[i][c] is the independent variable first + 3 i + c
+              // (mortar_points()): its 9 terms touch one derivative each.
+              for (unsigned int i = 0; i < 9; ++i)
+                {
+                  Assert(x[i][c].fastAccessDx(first + 3 * i + c) == 1.,
+                         ExcInternalError());
+                  r[c].val() += n[i] * x[i][c].val();
+                  r[c].fastAccessDx(first + 3 * i + c) += n[i];
+                }
+            }
+          else
+            for (unsigned int i = 0; i < 9; ++i)
+              r[c] += n[i] * x[i][c];
         }
       for (unsigned int k = 0; k < 2; ++k)
         {
@@ -352,8 +368,10 @@ namespace DuctileContact
                     q[c] += p * t[c];
                 }
               MortarPointOf<Number> point;
-              if (!project(slave, slave_face, q, o.n0, s_start, point.slave) ||
-                  !project(master, master_face, q, o.n0, m_start, point.master))
+              if (!project(
+                    slave, 0, slave_face, q, o.n0, s_start, point.slave) ||
+                  !project(
+                    master, 27, master_face, q, o.n0, m_start, point.master))
                 continue;
               point.weight = g.w * triangle_area;
               points.push_back(point);

@@ -229,8 +229,14 @@ namespace DuctileContact
   AssemblyInfo
   CoupledProblem::assemble(const AssemblyTargets &targets)
   {
+    // Contact compresses at its end; the bulk terms before it only if it
+    // reads them complete.
     const AssemblyInfo info =
-      assembler.assemble(u_ghosted, step, constraints, targets);
+      assembler.assemble(u_ghosted,
+                         step,
+                         constraints,
+                         targets,
+                         !contact || contact->needs_compressed_bulk());
     if (contact)
       {
         TimerOutput::Scope scope(timer,

@@ -56,13 +56,15 @@ namespace DuctileContact
     ~SystemAssembler();
 
     /// Residual, tangent and internal force at @p u (with ghost entries)
-    /// into @p targets, which are zeroed and compressed here; the energies
-    /// of the state.
+    /// into @p targets, which are zeroed and, if @p finish, compressed
+    /// here (else a later compress() adds what went to other ranks); the
+    /// energies of the state.
     AssemblyInfo
     assemble(const dealii::TrilinosWrappers::MPI::BlockVector &u,
              const StepData                                   &step,
              const dealii::AffineConstraints<double>          &constraints,
-             const AssemblyTargets                            &targets) const;
+             const AssemblyTargets                            &targets,
+             const bool finish = true) const;
 
     /// The commit of an accepted state @p u: the quadrature-point history
     /// after it into @p updated, and its energies with the increments of the

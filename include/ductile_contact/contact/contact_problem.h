@@ -127,6 +127,16 @@ namespace DuctileContact
     void
     setup();
 
+    /// Whether assemble() needs the bulk terms compressed before it: the
+    /// condensation reads the bulk rows of the slave nodes, and another
+    /// rank's cells may add to them. Otherwise the bulk assembly can leave
+    /// its terms to the one compress at the end of assemble().
+    bool
+    needs_compressed_bulk() const
+    {
+      return !bulk_rows_here;
+    }
+
     /// Candidate search on the geometry of @p u (ghosted) and reset of the
     /// multipliers to their committed values; returns true when the
     /// candidate couplings changed (the sparsity pattern must be rebuilt).
@@ -301,6 +311,11 @@ namespace DuctileContact
     void
     extend_constraints(const dealii::AffineConstraints<double> &constraints,
                        dealii::AffineConstraints<double>       &extended) const;
+
+    /// Whether, on every rank, only its own cells add to the rows of the
+    /// slave nodes it condenses (no ghost cell touches them). Collective.
+    bool
+    slave_rows_complete_here() const;
 
     /// Throws InputError (on every rank) when a slave node of a
     /// semi-smooth Newton pair hangs on a node off the slave surface or
@@ -569,6 +584,8 @@ namespace DuctileContact
     std::vector<ContactPairSummary> summaries;
     /// DoFs of all contact surfaces.
     dealii::IndexSet surface;
+    /// slave_rows_complete_here() of the current mesh.
+    bool bulk_rows_here = false;
     /// (time, file) of the surface outputs written, per pair.
     std::vector<std::vector<std::pair<double, std::string>>> output_records;
   };

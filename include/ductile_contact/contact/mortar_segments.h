@@ -43,7 +43,10 @@ namespace DuctileContact
    * face each other, which polygon vertices are clipped) are decided on the
    * values, the Newton back-projection runs on the values and one final
    * Newton correction in ContactAD gives the derivatives of the parameter
-   * points by the implicit function theorem. Instantiated for double and
+   * points by the implicit function theorem. With ContactAD the face
+   * coordinates must be the independent variables themselves: slave[i][c]
+   * direction 3 i + c, master[i][c] direction 27 + 3 i + c (as
+   * MortarFace::integrate() seeds them). Instantiated for double and
    * ContactAD.
    */
   template <typename Number>
