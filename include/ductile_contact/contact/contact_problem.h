@@ -102,14 +102,15 @@ namespace DuctileContact
    * sparsity couplings of the step. The exact pair checks and the
    * integration run at every assembly on the current geometry.
    *
-   * Parallel layout: the surfaces are replicated (ContactSurface); every
-   * rank integrates all pairs (work O(contact faces) per rank) and
-   * assembles the rows of the slave nodes whose DoFs it owns, which touch
-   * master rows owned by other ranks: those are added through the
-   * distributed matrix and vectors (compress(add)). The derivatives of D
-   * and M (the expensive part of a tangent assembly) are needed for the
-   * face pairs that touch an active slave node; all ranks integrate shares
-   * of them (linearise_operators()). The augmented Lagrangian sends the
+   * Parallel layout: the surfaces are replicated (ContactSurface); the
+   * ranks integrate equal shares of the face pairs and gather D and M
+   * (integrate()); each assembles the rows of the slave nodes whose DoFs
+   * it owns, which touch master rows owned by other ranks: those are added
+   * through the distributed matrix and vectors (compress(add)). The
+   * derivatives of D and M (the expensive part of a tangent assembly) are
+   * needed for the face pairs that touch an active slave node: integrate()
+   * makes those of its share for semi-smooth Newton, linearise_operators()
+   * those of an equal share of the pairs it needs otherwise. The augmented Lagrangian sends the
    * derivatives to the nodes' owners; the condensation of semi-smooth
    * Newton, whose tangent terms are linear in them, adds each rank's
    * partial derivatives where they were made (condense()). Results are the
