@@ -453,6 +453,106 @@ namespace DuctileContact
 
 
 
+  std::vector<double>
+  ContactProblem::integrate_share(Pair &pair, const bool derivatives) const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> close =
+      close_face_pairs(pair);
+    // With derivatives the clipping alone first (every rank): a pair that
+    // does not overlap costs little in double, but as much as one that
+    // does with derivatives, and the shares should hold equal work.
+    if (derivatives)
+      close.erase(std::remove_if(close.begin(),
+                                 close.end(),
+                                 [&](const auto &fc) {
+                                   return !faces_may_overlap(
+                                     pair.slave_faces[fc.first],
+                                     pair.master.current_face(fc.second));
+                                 }),
+                  close.end());
+    const auto [begin, end] =
+      share(close.size(), discretisation.dof_handler.get_communicator());
+    const SlaveWeights  weights = pair.slave_weights();
+    std::vector<double> records;
+    pair.linearised_here = derivatives;
+    pair.linearised_pairs.clear();
+    const auto                  local = std::make_unique<FacePairOperators>();
+    std::unique_ptr<MortarFace> face;
+    unsigned int                face_index = numbers::invalid_unsigned_int;
+    for (std::size_t q = begin; q < end; ++q)
+      {
+        const auto [f, c] = close[q];
+        if (f != face_index)
+          {
+            face       = std::make_unique<MortarFace>(pair.slave_faces[f],
+                                                pair.dual,
+                                                weights);
+            face_index = f;
+          }
+        const std::size_t stored = pair.linearised_pairs.size();
+        if (derivatives && pair.linearised_operators.size() <= stored)
+          pair.linearised_operators.resize(stored + 1);
+        FacePairOperators &operators =
+          derivatives ? pair.linearised_operators[stored] : *local;
+        if (!face->integrate(pair.master.current_face(c),
+                             operators,
+                             derivatives))
+          continue;
+        if (derivatives) // the position of the record, made global later
+          pair.linearised_pairs.push_back(records.size());
+        records.push_back(f);
+        records.push_back(c);
+        for (unsigned int i = 0; i < 9; ++i)
+          for (unsigned int k = 0; k < 9; ++k)
+            if (weights == SlaveWeights::full || k == i)
+              records.push_back(operators.D[i][k]);
+        for (unsigned int i = 0; i < 9; ++i)
+          for (unsigned int k = 0; k < 9; ++k)
+            records.push_back(operators.M[i][k]);
+      }
+    return records;
+  }
+
+
+
+  void
+  ContactProblem::add_operators(Pair                      &pair,
+                                const std::vector<double> &mine) const
+  {
+    const MPI_Comm     comm = discretisation.dof_handler.get_communicator();
+    const unsigned int n_d =
+      pair.slave_weights() == SlaveWeights::full ? 81 : 9;
+    const std::size_t record = 2 + n_d + 81;
+    const auto        all    = Utilities::MPI::all_gather(comm, mine);
+    std::size_t       before = 0;
+    for (unsigned int r = 0; r < Utilities::MPI::this_mpi_process(comm); ++r)
+      before += all[r].size() / record;
+    for (std::size_t &k : pair.linearised_pairs)
+      k = before + k / record;
+    const ContactSurface &slave = pair.slave, &master = pair.master;
+    for (const auto &data : all)
+      for (std::size_t p = 0; p < data.size(); p += record)
+        {
+          const unsigned int f = data[p], c = data[p + 1];
+          pair.overlaps.emplace_back(f, c);
+          const double *D = &data[p + 2], *M = D + n_d;
+          for (unsigned int i = 0; i < 9; ++i)
+            {
+              const unsigned int j = slave.faces[f].nodes[i];
+              for (unsigned int k = 0; k < 9; ++k)
+                {
+                  if (n_d == 81)
+                    pair.D[j][slave.faces[f].nodes[k]] += D[9 * i + k];
+                  else if (k == i)
+                    pair.D[j][j] += D[i];
+                  pair.M[j][master.faces[c].nodes[k]] += M[9 * i + k];
+                }
+            }
+        }
+  }
+
+
+
   void
   ContactProblem::integrate(Pair &pair, const bool derivatives)
   {
@@ -485,86 +585,7 @@ namespace DuctileContact
     // integrates an equal share, and all gather the operators (in their
     // order). Nothing is gained by giving the rank that owns the slave
     // nodes fewer: its condensation (condense()) starts after the gather.
-    std::vector<std::pair<unsigned int, unsigned int>> close =
-      close_face_pairs(pair);
-    // With derivatives the clipping alone first (every rank): a pair that
-    // does not overlap costs little in double, but as much as one that
-    // does with derivatives, and the shares should hold equal work.
-    if (derivatives)
-      close.erase(std::remove_if(close.begin(),
-                                 close.end(),
-                                 [&](const auto &fc) {
-                                   return !faces_may_overlap(
-                                     pair.slave_faces[fc.first],
-                                     master.current_face(fc.second));
-                                 }),
-                  close.end());
-    const MPI_Comm comm         = discretisation.dof_handler.get_communicator();
-    const auto [begin, end]     = share(close.size(), comm);
-    const SlaveWeights  weights = pair.slave_weights();
-    const unsigned int  n_d     = weights == SlaveWeights::lumped ? 9 : 81;
-    std::vector<double> mine;
-    pair.linearised_here = derivatives;
-    pair.linearised_pairs.clear();
-    const auto                  local = std::make_unique<FacePairOperators>();
-    std::unique_ptr<MortarFace> face;
-    unsigned int                face_index = numbers::invalid_unsigned_int;
-    for (std::size_t q = begin; q < end; ++q)
-      {
-        const auto [f, c] = close[q];
-        if (f != face_index)
-          {
-            face       = std::make_unique<MortarFace>(pair.slave_faces[f],
-                                                pair.dual,
-                                                weights);
-            face_index = f;
-          }
-        const Quad9       master_face = master.current_face(c);
-        const std::size_t stored      = pair.linearised_pairs.size();
-        if (derivatives && pair.linearised_operators.size() <= stored)
-          pair.linearised_operators.resize(stored + 1);
-        FacePairOperators &operators =
-          derivatives ? pair.linearised_operators[stored] : *local;
-        if (!face->integrate(master_face, operators, derivatives))
-          continue;
-        if (derivatives)
-          pair.linearised_pairs.push_back(mine.size()); // made global below
-        mine.push_back(f);
-        mine.push_back(c);
-        for (unsigned int i = 0; i < 9; ++i)
-          for (unsigned int k = 0; k < 9; ++k)
-            if (n_d == 81 || k == i)
-              mine.push_back(operators.D[i][k]);
-        for (unsigned int i = 0; i < 9; ++i)
-          for (unsigned int k = 0; k < 9; ++k)
-            mine.push_back(operators.M[i][k]);
-      }
-    const std::size_t record = 2 + n_d + 81;
-    const auto        all    = Utilities::MPI::all_gather(comm, mine);
-    std::size_t       before = 0;
-    for (unsigned int r = 0; r < Utilities::MPI::this_mpi_process(comm); ++r)
-      before += all[r].size() / record;
-    for (std::size_t &k : pair.linearised_pairs)
-      k = before + k / record;
-    for (const auto &data : all)
-      for (std::size_t p = 0; p < data.size(); p += record)
-        {
-          const unsigned int f = data[p], c = data[p + 1];
-          pair.overlaps.emplace_back(f, c);
-          const double *D = &data[p + 2], *M = D + n_d;
-          for (unsigned int i = 0; i < 9; ++i)
-            {
-              const unsigned int j = slave.faces[f].nodes[i];
-              for (unsigned int k = 0; k < 9; ++k)
-                {
-                  if (n_d == 81)
-                    pair.D[j][slave.faces[f].nodes[k]] += D[9 * i + k];
-                  else if (k == i)
-                    pair.D[j][j] += D[i];
-                  pair.M[j][master.faces[c].nodes[k]] += M[9 * i + k];
-                }
-            }
-        }
+    add_operators(pair, integrate_share(pair, derivatives));
 
     // Aggregates.
     for (unsigned int j = 0; j < n; ++j)

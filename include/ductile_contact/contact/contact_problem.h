@@ -110,11 +110,11 @@ namespace DuctileContact
    * derivatives of D and M (the expensive part of a tangent assembly) are
    * needed for the face pairs that touch an active slave node: integrate()
    * makes those of its share for semi-smooth Newton, linearise_operators()
-   * those of an equal share of the pairs it needs otherwise. The augmented Lagrangian sends the
-   * derivatives to the nodes' owners; the condensation of semi-smooth
-   * Newton, whose tangent terms are linear in them, adds each rank's
-   * partial derivatives where they were made (condense()). Results are the
-   * same on any number of ranks up to round-off.
+   * those of an equal share of the pairs it needs otherwise. The augmented
+   * Lagrangian sends the derivatives to the nodes' owners; the condensation of
+   * semi-smooth Newton, whose tangent terms are linear in them, adds each
+   * rank's partial derivatives where they were made (condense()). Results are
+   * the same on any number of ranks up to round-off.
    */
   class ContactProblem
   {
@@ -340,6 +340,18 @@ namespace DuctileContact
     /// and all gather the operators. Collective.
     void
     integrate(Pair &pair, const bool derivatives);
+
+    /// integrate(): this rank's share of the face pairs of @p pair, with
+    /// their derivatives kept in pair.linearised_operators if
+    /// @p derivatives; returns per overlapping pair the record f, c, D
+    /// (its row sums with SlaveWeights::lumped), M.
+    std::vector<double>
+    integrate_share(Pair &pair, const bool derivatives) const;
+
+    /// integrate(): gathers the records of integrate_share() from all
+    /// ranks, in rank order, into pair.overlaps, D and M.
+    void
+    add_operators(Pair &pair, const std::vector<double> &mine) const;
 
     /// This rank's contiguous, equal share [first, second) of @p n_items
     /// face pairs.
