@@ -152,12 +152,12 @@ namespace DuctileContact
     const std::vector<bool>           &needed,
     const std::vector<Tensor<1, dim>> &forces,
     const bool                         slave_rows,
-    const GradientShare                share,
+    const GradientShare                kept,
     const AffineConstraints<double>   &constraints,
     const AssemblyTargets             &targets,
     Gradients                         &gradients) const
   {
-    Assert(!pair.linearised_here || share == GradientShare::partial,
+    Assert(!pair.linearised_here || kept == GradientShare::partial,
            ExcInternalError());
     const MPI_Comm comm = discretisation.dof_handler.get_communicator();
     const bool     one  = Utilities::MPI::n_mpi_processes(comm) == 1;
@@ -190,7 +190,7 @@ namespace DuctileContact
                            constraints,
                            targets,
                            gradients);
-    if (one || share == GradientShare::partial)
+    if (one || kept == GradientShare::partial)
       return any;
     exchange_gradients(shared, needed, comm, gradients);
     return needed;

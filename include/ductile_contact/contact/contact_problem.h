@@ -495,7 +495,8 @@ namespace DuctileContact
     /// to the ranks that need them: the slave nodes of a surface are
     /// mostly owned by one rank, which would otherwise do all of the work.
     /// The derivatives integrate() kept are used where it made them. With
-    /// GradientShare::partial the gradients stay where they were made.
+    /// @p kept = GradientShare::partial the gradients stay where they were
+    /// made.
     /// Returns the nodes whose gradients this rank holds (all of them, or
     /// its share), i.e. @p needed or the union of every rank's.
     std::vector<bool>
@@ -504,7 +505,7 @@ namespace DuctileContact
       const std::vector<bool>                                     &needed,
       const std::vector<dealii::Tensor<1, dim>>                   &forces,
       const bool                                                   slave_rows,
-      const GradientShare                                          share,
+      const GradientShare                                          kept,
       const dealii::AffineConstraints<double>                     &constraints,
       const AssemblyTargets                                       &targets,
       std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
