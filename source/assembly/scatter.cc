@@ -28,11 +28,11 @@ namespace DuctileContact
 
 
     /**
-     * K(indices, indices) += matrix for DoFs none of which is constrained.
+     * K(rows, columns) += matrix for DoFs none of which is constrained.
      * AffineConstraints::distribute_local_to_global() passes every row to
      * Epetra, which looks up each entry's column in a hash table and
      * searches the row for it; here each DoF's local column index is looked
-     * up once per block row, the cell's columns are sorted by it, and each
+     * up once per block row, the local columns are sorted by it, and each
      * owned row is walked once alongside them (the Epetra rows are sorted
      * after FillComplete). Rows owned by another rank go through Trilinos's
      * non-local storage, as before; rows without an entry are skipped.
@@ -41,42 +41,51 @@ namespace DuctileContact
      */
     void
     add_unconstrained(const FullMatrix<double>                   &matrix,
-                      const std::vector<types::global_dof_index> &indices,
+                      const std::vector<types::global_dof_index> &rows,
+                      const std::vector<types::global_dof_index> &columns,
                       TrilinosWrappers::BlockSparseMatrix        &K)
     {
       using size_type              = TrilinosWrappers::SparseMatrix::size_type;
       const BlockIndices &blocks   = K.get_row_indices();
-      const unsigned int  n        = indices.size();
+      const unsigned int  n_rows   = rows.size();
+      const unsigned int  n_cols   = columns.size();
       const unsigned int  n_blocks = K.n_block_rows();
       // Work arrays kept between calls (one set per thread).
-      thread_local std::vector<std::vector<unsigned int>>    local;
-      thread_local std::vector<int>                          in_block;
-      thread_local std::vector<std::pair<int, unsigned int>> columns;
+      thread_local std::vector<std::vector<unsigned int>> row_local, col_local;
+      thread_local std::vector<int> row_in_block, col_in_block;
+      thread_local std::vector<std::pair<int, unsigned int>> sorted;
       thread_local std::vector<size_type>                    nonlocal_columns;
       thread_local std::vector<double>                       nonlocal_values;
       // Per block: the positions in the local matrix of its DoFs, and each
       // DoF's index within its block.
-      local.resize(n_blocks);
-      for (auto &l : local)
-        l.clear();
-      in_block.resize(n);
+      const auto sort_into_blocks =
+        [&](const std::vector<types::global_dof_index> &dofs,
+            std::vector<std::vector<unsigned int>>     &local,
+            std::vector<int>                           &in_block) {
+          local.resize(n_blocks);
+          for (auto &l : local)
+            l.clear();
+          in_block.resize(dofs.size());
+          for (unsigned int k = 0; k < dofs.size(); ++k)
+            {
+              const auto [b, i] = blocks.global_to_local(dofs[k]);
+              local[b].push_back(k);
+              in_block[k] = static_cast<int>(i);
+            }
+        };
+      sort_into_blocks(rows, row_local, row_in_block);
+      sort_into_blocks(columns, col_local, col_in_block);
       // Contact's local matrices are mostly rows without an entry.
       thread_local std::vector<bool> zero_row;
-      zero_row.resize(n);
-      for (unsigned int r = 0; r < n; ++r)
+      zero_row.resize(n_rows);
+      for (unsigned int r = 0; r < n_rows; ++r)
         zero_row[r] = std::all_of(&matrix(r, 0),
-                                  &matrix(r, 0) + n,
+                                  &matrix(r, 0) + n_cols,
                                   [](const double v) { return v == 0.; });
-      for (unsigned int k = 0; k < n; ++k)
-        {
-          const auto [b, i] = blocks.global_to_local(indices[k]);
-          local[b].push_back(k);
-          in_block[k] = static_cast<int>(i);
-        }
       for (unsigned int I = 0; I < n_blocks; ++I)
-        for (unsigned int J = 0; J < n_blocks && !local[I].empty(); ++J)
+        for (unsigned int J = 0; J < n_blocks && !row_local[I].empty(); ++J)
           {
-            if (local[J].empty())
+            if (col_local[J].empty())
               continue;
             TrilinosWrappers::SparseMatrix &block = K.block(I, J);
             // deal.II hands out the Epetra matrix as const only; its values
@@ -87,25 +96,25 @@ namespace DuctileContact
             // FillComplete sorts each row's local column indices.
             AssertThrow(A.Filled(),
                         ExcMessage("The tangent's pattern is not final."));
-            columns.clear();
-            for (const unsigned int k : local[J])
-              columns.emplace_back(A.LCID(in_block[k]), k);
-            std::sort(columns.begin(), columns.end());
-            for (const unsigned int r : local[I])
+            sorted.clear();
+            for (const unsigned int k : col_local[J])
+              sorted.emplace_back(A.LCID(col_in_block[k]), k);
+            std::sort(sorted.begin(), sorted.end());
+            for (const unsigned int r : row_local[I])
               {
                 if (zero_row[r])
                   continue;
-                const int row = A.LRID(in_block[r]);
+                const int row = A.LRID(row_in_block[r]);
                 if (row < 0)
                   {
                     nonlocal_columns.clear();
                     nonlocal_values.clear();
-                    for (const unsigned int k : local[J])
+                    for (const unsigned int k : col_local[J])
                       {
-                        nonlocal_columns.push_back(in_block[k]);
+                        nonlocal_columns.push_back(col_in_block[k]);
                         nonlocal_values.push_back(matrix(r, k));
                       }
-                    block.add(in_block[r],
+                    block.add(row_in_block[r],
                               nonlocal_columns.size(),
                               nonlocal_columns.data(),
                               nonlocal_values.data(),
@@ -121,7 +130,7 @@ namespace DuctileContact
                        ExcInternalError());
                 const int *position = entries;
                 const int *end      = entries + length;
-                for (const auto &[column, k] : columns)
+                for (const auto &[column, k] : sorted)
                   {
                     const double v = matrix(r, k);
                     // A linear walk: the cell's columns are a good part
@@ -159,7 +168,7 @@ namespace DuctileContact
   {
     if (targets.tangent && !any_constrained(indices, constraints))
       {
-        add_unconstrained(matrix, indices, *targets.tangent);
+        add_unconstrained(matrix, indices, indices, *targets.tangent);
         if (targets.newton_rhs)
           targets.newton_rhs->add(indices, rhs);
       }
@@ -181,6 +190,22 @@ namespace DuctileContact
       hanging_nodes.distribute_local_to_global(f_int,
                                                indices,
                                                *targets.internal_force);
+  }
+
+
+
+  void
+  scatter_matrix_block(const FullMatrix<double>                   &matrix,
+                       const std::vector<types::global_dof_index> &rows,
+                       const std::vector<types::global_dof_index> &columns,
+                       const AffineConstraints<double>            &constraints,
+                       TrilinosWrappers::BlockSparseMatrix        &tangent)
+  {
+    Assert(!any_constrained(rows, constraints) &&
+             !any_constrained(columns, constraints),
+           ExcMessage("scatter_matrix_block() takes unconstrained DoFs only"));
+    (void)constraints;
+    add_unconstrained(matrix, rows, columns, tangent);
   }
 
 

@@ -321,11 +321,6 @@ namespace DuctileContact
     const Tensor<1, dim> &f  = pair.nodal[j].force_density;
     if (direct)
       add_direct_gradients(pair, j, g);
-    std::map<unsigned int, unsigned int>       local;
-    const std::vector<types::global_dof_index> indices =
-      local_numbering(pair, j, {j}, g, local);
-    FullMatrix<double> matrix(indices.size(), indices.size());
-    Vector<double>     zero(indices.size());
     std::array<std::array<double, 10>, dim> Js;
     for (unsigned int r = 0; r < dim; ++r)
       {
@@ -335,19 +330,59 @@ namespace DuctileContact
         for (unsigned int a = 0; a < 10; ++a)
           Js[r][a] = nodes.free[j][r] ? J[r][a] - (a == 0 ? Cf_f / A : 0.) : 0.;
       }
+    // The block: rows of node j, then of its master nodes; a column per
+    // key of g.
+    const auto                          &master_row = pair.master_row(j);
+    std::vector<unsigned int>            row_keys;
+    std::vector<types::global_dof_index> rows, columns;
+    for (unsigned int r = 0; r < dim; ++r)
+      row_keys.push_back(3 * j + r);
+    for (const auto &lm : master_row)
+      for (unsigned int r = 0; r < dim; ++r)
+        row_keys.push_back(3 * (ns + lm.first) + r);
+    for (const unsigned int key : row_keys)
+      rows.push_back(coordinate_dof(pair, key));
+    for (const auto &entry : g)
+      columns.push_back(coordinate_dof(pair, entry.first));
+    FullMatrix<double> block(rows.size(), columns.size());
+    unsigned int       column = 0;
     for (const auto &[key, e] : g)
       {
-        const unsigned int column = local[key];
         for (unsigned int r = 0; r < dim; ++r)
           {
             double v = 0.;
             for (unsigned int a = 0; a < 10; ++a)
               v += Js[r][a] * e[a];
-            matrix(local[3 * j + r], column) -= v;
+            block(r, column) -= v;
           }
-        for (const auto &[l, m] : pair.master_row(j))
+        unsigned int row = dim;
+        for (const auto &[l, m] : master_row)
           for (unsigned int r = 0; r < dim; ++r)
-            matrix(local[3 * (ns + l) + r], column) += m / A * f[r] * e[0];
+            block(row++, column) += m / A * f[r] * e[0];
+        ++column;
+      }
+    const auto constrained = [&](const types::global_dof_index dof) {
+      return constraints.is_constrained(dof);
+    };
+    if (std::none_of(rows.begin(), rows.end(), constrained) &&
+        std::none_of(columns.begin(), columns.end(), constrained))
+      {
+        scatter_matrix_block(
+          block, rows, columns, constraints, *targets.tangent);
+        return;
+      }
+    // Through the square local system of scatter(), which applies the
+    // constraints (and their inhomogeneities to the right-hand side).
+    std::map<unsigned int, unsigned int>       local;
+    const std::vector<types::global_dof_index> indices =
+      local_numbering(pair, j, {j}, g, local);
+    FullMatrix<double> matrix(indices.size(), indices.size());
+    Vector<double>     zero(indices.size());
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      {
+        unsigned int c = 0;
+        for (const auto &entry : g)
+          matrix(local[row_keys[r]], local[entry.first]) += block(r, c++);
       }
     AssemblyTargets matrix_only = targets;
     matrix_only.residual        = nullptr;

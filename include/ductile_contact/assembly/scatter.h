@@ -2,6 +2,7 @@
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <ductile_contact/assembly/assembly_data.h>
@@ -25,6 +26,18 @@ namespace DuctileContact
           const dealii::AffineConstraints<double>            &constraints,
           const dealii::AffineConstraints<double>            &hanging_nodes,
           const AssemblyTargets                              &targets);
+
+  /// K(rows, columns) += @p matrix (rows.size() x columns.size()) where
+  /// none of the DoFs is constrained by @p constraints (then scatter()
+  /// would add the same entries, and no right-hand side changes): a block
+  /// of a few rows and many columns without the square local matrix.
+  void
+  scatter_matrix_block(
+    const dealii::FullMatrix<double>                   &matrix,
+    const std::vector<dealii::types::global_dof_index> &rows,
+    const std::vector<dealii::types::global_dof_index> &columns,
+    const dealii::AffineConstraints<double>            &constraints,
+    dealii::TrilinosWrappers::BlockSparseMatrix        &tangent);
 
   /// Ends an assembly into @p targets: compresses (adds across ranks) every
   /// matrix and vector it holds. Used after the bulk and after the contact
