@@ -57,31 +57,16 @@ namespace DuctileContact
         node_of[pair.slave.nodes[j].dofs[0]] = j;
     std::vector<std::vector<types::global_dof_index>> columns(
       pair.slave.nodes.size());
-    // A cell writes into the row of node j if it has one of j's DoFs or a
-    // DoF whose hanging-node constraint sends its row there.
-    const auto &hanging = discretisation.hanging_node_constraints;
-    const auto  add_cell_to =
+    // The cells that write into the row of node j.
+    for_each_cell_row(
+      [](const auto &cell) { return !cell->is_artificial(); },
       [&](const types::global_dof_index               row,
           const std::vector<types::global_dof_index> &cell_dofs) {
         if (const auto it = node_of.find(row); it != node_of.end())
           columns[it->second].insert(columns[it->second].end(),
                                      cell_dofs.begin(),
                                      cell_dofs.end());
-      };
-    std::vector<types::global_dof_index> cell_dofs;
-    for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
-      {
-        if (cell->is_artificial())
-          continue;
-        cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
-        cell->get_dof_indices(cell_dofs);
-        for (const auto dof : cell_dofs)
-          if (const auto *parents = hanging.get_constraint_entries(dof))
-            for (const auto &parent : *parents)
-              add_cell_to(parent.first, cell_dofs);
-          else
-            add_cell_to(dof, cell_dofs);
-      }
+      });
     for (auto &c : columns)
       {
         std::sort(c.begin(), c.end());

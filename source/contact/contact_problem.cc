@@ -137,24 +137,11 @@ namespace DuctileContact
         for (const auto &node : pair.slave.nodes)
           if (discretisation.locally_owned_dofs.is_element(node.dofs[0]))
             rows.insert(node.dofs.begin(), node.dofs.end());
-    // A ghost cell adds to such a row if it has the DoF or one whose
-    // hanging-node constraint sends its row there.
-    const auto &hanging = discretisation.hanging_node_constraints;
-    bool        here    = true;
-    std::vector<types::global_dof_index> cell_dofs;
-    for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
-      {
-        if (!cell->is_ghost())
-          continue;
-        cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
-        cell->get_dof_indices(cell_dofs);
-        for (const auto dof : cell_dofs)
-          if (const auto *parents = hanging.get_constraint_entries(dof))
-            for (const auto &parent : *parents)
-              here = here && rows.count(parent.first) == 0;
-          else
-            here = here && rows.count(dof) == 0;
-      }
+    bool here = true;
+    for_each_cell_row([](const auto &cell) { return cell->is_ghost(); },
+                      [&](const types::global_dof_index row, const auto &) {
+                        here = here && rows.count(row) == 0;
+                      });
     return Utilities::MPI::min(here ? 1 : 0,
                                discretisation.dof_handler.get_communicator()) ==
            1;
@@ -418,6 +405,29 @@ namespace DuctileContact
                                                           sp,
                                                           false);
           }
+      }
+  }
+
+
+
+  void
+  ContactProblem::for_each_cell_row(const CellFilter &take,
+                                    const RowVisitor &visit) const
+  {
+    const auto &hanging = discretisation.hanging_node_constraints;
+    std::vector<types::global_dof_index> cell_dofs;
+    for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
+      {
+        if (!take(cell))
+          continue;
+        cell_dofs.resize(cell->get_fe().n_dofs_per_cell());
+        cell->get_dof_indices(cell_dofs);
+        for (const auto dof : cell_dofs)
+          if (const auto *parents = hanging.get_constraint_entries(dof))
+            for (const auto &parent : *parents)
+              visit(parent.first, cell_dofs);
+          else
+            visit(dof, cell_dofs);
       }
   }
 

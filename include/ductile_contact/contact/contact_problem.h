@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/block_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
@@ -16,6 +17,7 @@
 #include <ductile_contact/output/statistics.h>
 
 #include <deque>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -312,6 +314,17 @@ namespace DuctileContact
     void
     extend_constraints(const dealii::AffineConstraints<double> &constraints,
                        dealii::AffineConstraints<double>       &extended) const;
+
+    using CellFilter = std::function<bool(
+      const dealii::DoFHandler<dim>::active_cell_iterator &)>;
+    using RowVisitor =
+      std::function<void(const dealii::types::global_dof_index,
+                         const std::vector<dealii::types::global_dof_index> &)>;
+    /// Calls @p visit(row, the cell's DoFs) for every row that an active
+    /// cell accepted by @p take writes into: its DoFs, and for a DoF with a
+    /// hanging-node constraint the parents instead.
+    void
+    for_each_cell_row(const CellFilter &take, const RowVisitor &visit) const;
 
     /// Whether, on every rank, only its own cells add to the rows of the
     /// slave nodes it condenses (no ghost cell touches them). Collective.
