@@ -160,16 +160,6 @@ namespace DuctileContact
           }
       return true;
     }
-
-    FaceCoordinates<double>
-    coordinates(const Quad9 &face)
-    {
-      FaceCoordinates<double> x;
-      for (unsigned int i = 0; i < 9; ++i)
-        for (unsigned int c = 0; c < dim; ++c)
-          x[i][c] = face.x[i][c];
-      return x;
-    }
   } // namespace
 
 
@@ -187,7 +177,7 @@ namespace DuctileContact
       : slave(slave)
       , dual(dual)
       , weights(weights)
-      , coefficients(basis_coefficients(coordinates(slave), dual))
+      , coefficients(basis_coefficients(coordinates_of(slave), dual))
   {
   }
 
@@ -199,8 +189,8 @@ namespace DuctileContact
                         const bool         derivatives) const
   {
     if (!derivatives)
-      return integrate_pair(coordinates(slave),
-                            coordinates(master),
+      return integrate_pair(coordinates_of(slave),
+                            coordinates_of(master),
                             coefficients,
                             weights,
                             out.D,

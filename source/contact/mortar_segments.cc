@@ -384,21 +384,28 @@ namespace DuctileContact
 
 
 
+  FaceCoordinates<double>
+  coordinates_of(const Quad9 &face)
+  {
+    FaceCoordinates<double> x;
+    for (unsigned int i = 0; i < 9; ++i)
+      for (unsigned int c = 0; c < dim; ++c)
+        x[i][c] = face.x[i][c];
+    return x;
+  }
+
+
+
   bool
   faces_may_overlap(const Quad9 &slave, const Quad9 &master)
   {
-    FaceCoordinates<double> s, m;
-    for (unsigned int i = 0; i < 9; ++i)
-      for (unsigned int c = 0; c < dim; ++c)
-        {
-          s[i][c] = slave.x[i][c];
-          m[i][c] = master.x[i][c];
-        }
     bool found = false;
-    for_each_overlap(s, m, [&](const SubQuadOverlap<double> &) {
-      found = true;
-      return false;
-    });
+    for_each_overlap(coordinates_of(slave),
+                     coordinates_of(master),
+                     [&](const SubQuadOverlap<double> &) {
+                       found = true;
+                       return false;
+                     });
     return found;
   }
 
@@ -407,15 +414,9 @@ namespace DuctileContact
   std::vector<MortarPoint>
   mortar_points(const Quad9 &slave, const Quad9 &master)
   {
-    FaceCoordinates<double> s, m;
-    for (unsigned int i = 0; i < 9; ++i)
-      for (unsigned int c = 0; c < dim; ++c)
-        {
-          s[i][c] = slave.x[i][c];
-          m[i][c] = master.x[i][c];
-        }
     std::vector<MortarPoint> points;
-    for (const auto &p : mortar_points<double>(s, m))
+    for (const auto &p :
+         mortar_points(coordinates_of(slave), coordinates_of(master)))
       points.push_back({Point<2>(p.slave[0], p.slave[1]),
                         Point<2>(p.master[0], p.master[1]),
                         p.weight});

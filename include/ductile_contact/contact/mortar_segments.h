@@ -54,6 +54,10 @@ namespace DuctileContact
   mortar_points(const FaceCoordinates<Number> &slave,
                 const FaceCoordinates<Number> &master);
 
+  /// The node coordinates of @p face as FaceCoordinates.
+  FaceCoordinates<double>
+  coordinates_of(const Quad9 &face);
+
   /// Whether some sub-quads of the two faces face each other and overlap
   /// in the plane (the clipping of mortar_points() without its
   /// quadrature): false means mortar_points() has no point.
