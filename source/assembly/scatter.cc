@@ -5,6 +5,7 @@
 
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
+#include <string>
 #include <utility>
 
 namespace DuctileContact
@@ -206,6 +207,30 @@ namespace DuctileContact
            ExcMessage("scatter_matrix_block() takes unconstrained DoFs only"));
     (void)constraints;
     add_unconstrained(matrix, rows, columns, tangent);
+  }
+
+
+
+  void
+  zero(const AssemblyTargets &targets)
+  {
+    if (auto *K = targets.tangent)
+      for (unsigned int i = 0; i < K->n_block_rows(); ++i)
+        for (unsigned int j = 0; j < K->n_block_cols(); ++j)
+          {
+            // The values only (deal.II gives no writable access to the
+            // Epetra matrix; its pattern stays as it is).
+            auto &A =
+              const_cast<Epetra_CrsMatrix &>(K->block(i, j).trilinos_matrix());
+            const int ierr = A.PutScalar(0.);
+            AssertThrow(ierr == 0,
+                        ExcMessage("Epetra PutScalar failed: " +
+                                   std::to_string(ierr)));
+          }
+    for (auto *v :
+         {targets.newton_rhs, targets.residual, targets.internal_force})
+      if (v)
+        *v = 0;
   }
 
 

@@ -60,12 +60,7 @@ namespace DuctileContact
                             const AssemblyTargets           &targets,
                             const bool                       finish) const
   {
-    if (targets.tangent)
-      *targets.tangent = 0;
-    for (auto *v :
-         {targets.newton_rhs, targets.residual, targets.internal_force})
-      if (v)
-        *v = 0;
+    zero(targets);
     const unsigned int n_cells = discretisation.triangulation.n_active_cells();
     if (targets.branches == Branches::record)
       targets.branch_record->reset(n_cells);

@@ -39,6 +39,16 @@ namespace DuctileContact
     const dealii::AffineConstraints<double>            &constraints,
     dealii::TrilinosWrappers::BlockSparseMatrix        &tangent);
 
+  /// Starts an assembly into @p targets: zeroes every matrix and vector it
+  /// holds. The matrix is zeroed in place: deal.II's `K = 0` compresses
+  /// first, which sends the whole non-local pattern across the ranks (all
+  /// zeros after the compress() that ends every assembly): ~5 ms per tangent
+  /// on prm/two_bodies.prm for nothing. An assembly that does not end with
+  /// compress() ends the run (nothing catches an exception from it), so the
+  /// non-local part is zero here.
+  void
+  zero(const AssemblyTargets &targets);
+
   /// Ends an assembly into @p targets: compresses (adds across ranks) every
   /// matrix and vector it holds. Used after the bulk and after the contact
   /// terms.
