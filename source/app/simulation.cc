@@ -430,8 +430,8 @@ namespace DuctileContact
     TimerOutput::Scope scope(timer, "commit history");
     QuadratureHistory  updated = history;
     u_ghosted                  = u;
-    const AssemblyInfo info = assembler->commit(u_ghosted, step_data, updated);
-    assembler->cell_averages(u_ghosted, step_data, cell_quantities);
+    const AssemblyInfo info =
+      assembler->commit(u_ghosted, step_data, updated, cell_quantities);
     history = std::move(updated);
     return info;
   }

@@ -436,7 +436,7 @@ namespace DuctileContact
         vm += von_mises(m.tau) * JxW;
         mean += trace(m.tau) / 3. * JxW;
         mean_J += m.J * JxW;
-        if (pass.averages)
+        if (pass.averages && !pass.updated_history)
           {
             // Only the cell averages: the crack driver, no rows.
             if (has_s)
@@ -461,9 +461,13 @@ namespace DuctileContact
             continue;
           }
 
-        scratch.shapes.reinit(fe_values, q, dofs);
-        add_displacement_rows(
-          m, body, scratch.shapes, dofs, q, JxW, tangent, rows);
+        // A commit needs no displacement rows, and shape functions only
+        // for the hardening and crack terms.
+        if (targets || has_alpha || has_s)
+          scratch.shapes.reinit(fe_values, q, dofs);
+        if (targets)
+          add_displacement_rows(
+            m, body, scratch.shapes, dofs, q, JxW, tangent, rows);
 
         if (has_alpha)
           hardening_point(m,
@@ -512,7 +516,8 @@ namespace DuctileContact
             copy.mean_J              = mean_J / volume;
             copy.crack_driving_force = driver_sum / volume;
           }
-        return;
+        if (!pass.updated_history)
+          return;
       }
     if (tangent)
       rows.add_blocks(dofs);

@@ -78,14 +78,28 @@ namespace DuctileContact
 
 
 
+  void
+  SystemAssembler::resize(CellQuantities &quantities) const
+  {
+    for (auto *v : {&quantities.von_mises,
+                    &quantities.mean_stress,
+                    &quantities.J,
+                    &quantities.crack_driving_force})
+      v->reinit(discretisation.triangulation.n_active_cells());
+  }
+
+
+
   AssemblyInfo
   SystemAssembler::commit(const TrilinosWrappers::MPI::BlockVector &u,
                           const StepData                           &step,
-                          QuadratureHistory &updated) const
+                          QuadratureHistory                        &updated,
+                          CellQuantities &quantities) const
   {
-    return run({&u, &step, nullptr, &updated, false},
+    resize(quantities);
+    return run({&u, &step, nullptr, &updated, true},
                discretisation.hanging_node_constraints,
-               nullptr);
+               &quantities);
   }
 
 
@@ -95,11 +109,7 @@ namespace DuctileContact
                                  const StepData                           &step,
                                  CellQuantities &quantities) const
   {
-    for (auto *v : {&quantities.von_mises,
-                    &quantities.mean_stress,
-                    &quantities.J,
-                    &quantities.crack_driving_force})
-      v->reinit(discretisation.triangulation.n_active_cells());
+    resize(quantities);
     run({&u, &step, nullptr, nullptr, true},
         discretisation.hanging_node_constraints,
         &quantities);

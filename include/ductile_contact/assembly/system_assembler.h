@@ -67,12 +67,14 @@ namespace DuctileContact
              const bool finish = true) const;
 
     /// The commit of an accepted state @p u: the quadrature-point history
-    /// after it into @p updated, and its energies with the increments of the
-    /// step (plastic work, history driving work).
+    /// after it into @p updated, its energies with the increments of the
+    /// step (plastic work, history driving work) and, in the same pass, its
+    /// cell averages for the output into @p quantities.
     AssemblyInfo
     commit(const dealii::TrilinosWrappers::MPI::BlockVector &u,
            const StepData                                   &step,
-           QuadratureHistory                                &updated) const;
+           QuadratureHistory                                &updated,
+           CellQuantities                                   &quantities) const;
 
     /// Why the state of @p info is not admissible, with where it happens
     /// ("" when it is): an inverted element (J <= 0) or a non-finite
@@ -80,13 +82,17 @@ namespace DuctileContact
     std::string
     fault(const AssemblyInfo &info) const;
 
-    /// Cell averages of @p u for the output.
+    /// Cell averages of @p u for the output (commit() makes them too).
     void
     cell_averages(const dealii::TrilinosWrappers::MPI::BlockVector &u,
                   const StepData                                   &step,
                   CellQuantities &quantities) const;
 
   private:
+    /// Sizes @p quantities to one entry per active cell.
+    void
+    resize(CellQuantities &quantities) const;
+
     /// What a pass computes besides the rows.
     struct Pass
     {
@@ -94,7 +100,9 @@ namespace DuctileContact
       const StepData                                   *step;
       const AssemblyTargets                            *targets;
       QuadratureHistory                                *updated_history;
-      bool                                              averages;
+      /// Cell averages for the output: alone (no rows, no history) or
+      /// with a commit.
+      bool averages;
     };
 
     AssemblyInfo
