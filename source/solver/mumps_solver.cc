@@ -312,17 +312,63 @@ namespace DuctileContact
 
 
 
+  MumpsSolver::LocalPattern
+  MumpsSolver::LocalPattern::of(const Epetra_CrsMatrix &A)
+  {
+    LocalPattern p;
+    for (int r = 0; r < A.NumMyRows(); ++r)
+      p.row_gids.push_back(A.RowMap().GID64(r));
+    for (int c = 0; c < A.NumMyCols(); ++c)
+      p.column_gids.push_back(A.ColMap().GID64(c));
+    p.row_start.reserve(A.NumMyRows() + 1);
+    p.columns.reserve(A.NumMyNonzeros());
+    for (int r = 0; r < A.NumMyRows(); ++r)
+      {
+        int     n;
+        double *values;
+        int    *indices;
+        A.ExtractMyRowView(r, n, values, indices);
+        p.row_start.push_back(static_cast<int>(p.columns.size()));
+        p.columns.insert(p.columns.end(), indices, indices + n);
+      }
+    p.row_start.push_back(static_cast<int>(p.columns.size()));
+    return p;
+  }
+
+
+
+  bool
+  MumpsSolver::LocalPattern::matches(const Epetra_CrsMatrix &A) const
+  {
+    if (static_cast<std::size_t>(A.NumMyRows()) != row_gids.size() ||
+        static_cast<std::size_t>(A.NumMyCols()) != column_gids.size() ||
+        static_cast<std::size_t>(A.NumMyNonzeros()) != columns.size())
+      return false;
+    for (int r = 0; r < A.NumMyRows(); ++r)
+      if (A.RowMap().GID64(r) != row_gids[r])
+        return false;
+    for (int c = 0; c < A.NumMyCols(); ++c)
+      if (A.ColMap().GID64(c) != column_gids[c])
+        return false;
+    for (int r = 0; r < A.NumMyRows(); ++r)
+      {
+        int     n;
+        double *values;
+        int    *indices;
+        A.ExtractMyRowView(r, n, values, indices);
+        if (n != row_start[r + 1] - row_start[r] ||
+            !std::equal(indices, indices + n, columns.data() + row_start[r]))
+          return false;
+      }
+    return true;
+  }
+
+
+
   bool
   MumpsSolver::has_factors_for(const Epetra_CrsMatrix &A) const
   {
-    bool        same = factorised;
-    std::size_t e    = 0;
-    if (same)
-      for_each_triplet(A, factorisation, [&](const int i, const int j, double) {
-        same = same && e < row.size() && row[e] == i && column[e] == j;
-        ++e;
-      });
-    same = same && e == row.size();
+    const bool same = factorised && pattern.matches(A);
     return Utilities::MPI::min(same ? 1 : 0, comm) == 1;
   }
 
@@ -349,6 +395,7 @@ namespace DuctileContact
     const bool analyse = Utilities::MPI::min(same ? 1 : 0, comm) == 0;
 
     factorised                  = false;
+    pattern                     = LocalPattern::of(A);
     const auto point_to_pattern = [&]() {
       mumps->visit([&](auto &id) {
         id.irn_loc = row.data();
