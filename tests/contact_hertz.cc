@@ -26,36 +26,7 @@ namespace
   std::string
   hertz_prm(const unsigned int ratio)
   {
-    return Testing::two_body_contact_prm("hertz_h" + std::to_string(ratio) +
-                                           ".msh",
-                                         "3.846153846153846e8",
-                                         "8.333333333333334e8",
-                                         4,
-                                         3) +
-           R"(
-subsection Boundary conditions
-  set Boundary ids = 1, 2, 5, 6
-end
-subsection Boundary 1
-  set Constrained components = y
-end
-subsection Boundary 2
-  set Constrained components = y
-  set Displacement           = 0; -2e-4*t; 0
-end
-subsection Boundary 5
-  set Constrained components = x
-end
-subsection Boundary 6
-  set Constrained components = z
-end
-subsection Load stepping
-  set End time  = 1
-  set Time step = 1
-end
-subsection Linear solver
-  set Type = direct
-end
+    return Testing::hertz_line_prm(ratio) + R"(
 subsection Output
   set Interval = 1
 end

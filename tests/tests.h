@@ -319,6 +319,48 @@ end
   }
 
   /**
+   * .prm text of the Hertz line contact of contact_hertz (a cylinder, R =
+   * 1 m, pressed onto a slab of the same material by 2e-4 m in one step,
+   * frictionless, half model on tests/meshes/hertz_h<@p ratio>.msh);
+   * @p pair_entries adds entries to the pair's subsection.
+   */
+  inline std::string
+  hertz_line_prm(const unsigned int ratio, const std::string &pair_entries = "")
+  {
+    return two_body_contact_prm("hertz_h" + std::to_string(ratio) + ".msh",
+                                "3.846153846153846e8",
+                                "8.333333333333334e8",
+                                4,
+                                3,
+                                pair_entries) +
+           R"(
+subsection Boundary conditions
+  set Boundary ids = 1, 2, 5, 6
+end
+subsection Boundary 1
+  set Constrained components = y
+end
+subsection Boundary 2
+  set Constrained components = y
+  set Displacement           = 0; -2e-4*t; 0
+end
+subsection Boundary 5
+  set Constrained components = x
+end
+subsection Boundary 6
+  set Constrained components = z
+end
+subsection Load stepping
+  set End time  = 1
+  set Time step = 1
+end
+subsection Linear solver
+  set Type = direct
+end
+)";
+  }
+
+  /**
    * Hertz fit of nodal contact pressures: least squares of
    * p^2 = p0^2 (1 - r^2/a^2) over the nodes with p > 0 and r^2 <= @p r2_max
    * (@p r2: squared distance of each node from the centre of the contact).

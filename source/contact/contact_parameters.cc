@@ -50,9 +50,15 @@ namespace DuctileContact
                       search_radius,
                       "Enlargement of the face bounding boxes in the search "
                       "for candidate master faces, done at the start of "
-                      "every load step [m]; must cover the relative motion "
-                      "within a step. 0: the largest face diameter of the "
-                      "two surfaces.",
+                      "every load step [m]; the candidates fix the matrix "
+                      "couplings of the step. 0: half the smallest slave "
+                      "face size (the reach within which an overlap counts) "
+                      "plus twice the largest predicted motion of a slave "
+                      "and of a master node in the step, at least a quarter "
+                      "of that face size. A master face that comes within "
+                      "reach during a step without being a candidate fails "
+                      "the step, and the radius doubles for the rest of the "
+                      "run.",
                       Patterns::Double(0.));
     prm.add_parameter("Penetration tolerance",
                       penetration_tolerance,

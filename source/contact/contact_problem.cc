@@ -17,6 +17,7 @@
 #include <iterator>
 #include <memory>
 #include <set>
+#include <sstream>
 #include <unordered_set>
 
 namespace DuctileContact
@@ -100,10 +101,7 @@ namespace DuctileContact
         pair.law.activation_threshold = 1e-12 * pair.law.penalty * h;
         pair.face_size                = h;
         pair.tolerance                = prm.penetration_tolerance * h;
-        pair.search_radius            = prm.search_radius > 0.
-                                          ? prm.search_radius
-                                          : std::max(pair.slave.largest_face_size(),
-                                          pair.master.largest_face_size());
+        pair.given_radius             = prm.search_radius;
         pair.candidates.assign(pair.slave.faces.size(), {});
         for (const ContactSurface *side : {&pair.slave, &pair.master})
           for (const auto &node : side->nodes)
@@ -192,6 +190,11 @@ namespace DuctileContact
         pair.slave.update(u, discretisation);
         pair.master.update(u, discretisation);
         pair.multiplier = pair.committed_multiplier;
+        if (!pair.missed.empty())
+          pair.widen *= 2.;
+        pair.missed.clear();
+        pair.search_radius = search_radius(pair);
+
         std::vector<std::vector<unsigned int>> candidates = search(pair);
         if (candidates != pair.candidates)
           {
@@ -224,6 +227,76 @@ namespace DuctileContact
         std::sort(candidates[s].begin(), candidates[s].end());
       }
     return candidates;
+  }
+
+
+
+  double
+  ContactProblem::search_radius(const Pair &pair)
+  {
+    if (pair.given_radius > 0.)
+      return pair.widen * pair.given_radius;
+    const auto largest_motion = [](const ContactSurface          &surface,
+                                   const std::vector<Point<dim>> &committed) {
+      double motion = 0.;
+      for (unsigned int n = 0; n < surface.nodes.size(); ++n)
+        motion =
+          std::max(motion, surface.nodes[n].current.distance(committed[n]));
+      return motion;
+    };
+    const double motion = largest_motion(pair.slave, pair.slave_committed) +
+                          largest_motion(pair.master, pair.master_committed);
+    return pair.widen *
+           (reach(pair) + std::max(0.25 * pair.face_size, 2. * motion));
+  }
+
+
+
+  std::string
+  ContactProblem::missed_pair(const Pair &pair)
+  {
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
+    for (unsigned int m = 0; m < pair.master.faces.size(); ++m)
+      boxes.emplace_back(face_box(pair.master, m, 0.), m);
+    const auto tree = pack_rtree(boxes);
+    for (unsigned int f = 0; f < pair.slave.faces.size(); ++f)
+      {
+        std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+        tree.query(boost::geometry::index::intersects(
+                     face_box(pair.slave, f, reach(pair))),
+                   std::back_inserter(hits));
+        const auto &candidates = pair.candidates[f];
+        for (const auto &hit : hits)
+          if (!std::binary_search(candidates.begin(),
+                                  candidates.end(),
+                                  hit.second) &&
+              faces_may_overlap(pair.slave_faces[f],
+                                pair.master.current_face(hit.second)))
+            {
+              std::ostringstream s;
+              s << "contact pair " << pair.index + 1 << ": the master face at ("
+                << pair.master.current_face(hit.second).position({0.5, 0.5})
+                << ") m came within reach of the slave face at ("
+                << pair.slave_faces[f].position({0.5, 0.5})
+                << ") m but is not among the candidates of the step "
+                   "(search radius "
+                << pair.search_radius
+                << " m); the step is redone with the radius doubled";
+              return s.str();
+            }
+      }
+    return "";
+  }
+
+
+
+  std::string
+  ContactProblem::fault() const
+  {
+    for (const Pair &pair : data)
+      if (!pair.missed.empty())
+        return pair.missed;
+    return "";
   }
 
 
@@ -441,11 +514,8 @@ namespace DuctileContact
       {
         if (pair.candidates[f].empty())
           continue;
-        // Only candidates whose current box comes within half a slave face
-        // of this face's box can overlap it (an open gap wider than that
-        // is not in contact in any case).
         const auto slave_box =
-          face_box(pair.slave, f, 0.5 * pair.face_size).get_boundary_points();
+          face_box(pair.slave, f, reach(pair)).get_boundary_points();
         for (const unsigned int c : pair.candidates[f])
           {
             const auto master_box =
@@ -620,6 +690,9 @@ namespace DuctileContact
     pair.folded_M.clear();
     if (pair.semi_smooth && pair.slave.has_hanging_nodes())
       fold_hanging_nodes(pair);
+    // Kept until the next step: a missed pair widens its search.
+    if (pair.missed.empty())
+      pair.missed = missed_pair(pair);
   }
 
 

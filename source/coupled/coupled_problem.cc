@@ -274,10 +274,12 @@ namespace DuctileContact
       e.round_off.push_back(frozen[b] ? 0.
                                       : std::numeric_limits<double>::epsilon() *
                                           info.residual_magnitude[b]);
-    e.admissible =
-      !info.inverted && !info.non_finite && prescribed_fault.empty();
-    e.inadmissible =
-      !prescribed_fault.empty() ? prescribed_fault : assembler.fault(info);
+    const std::string contact_fault = contact ? contact->fault() : "";
+    e.admissible                    = !info.inverted && !info.non_finite &&
+                   prescribed_fault.empty() && contact_fault.empty();
+    e.inadmissible   = !prescribed_fault.empty() ? prescribed_fault
+                       : !contact_fault.empty()  ? contact_fault
+                                                 : assembler.fault(info);
     e.branch_changes = info.switch_flips;
     return e;
   }

@@ -178,6 +178,14 @@ namespace DuctileContact
                  const unsigned int step,
                  const double       time);
 
+    /// Why the state of the last assembly cannot be accepted ("" when it
+    /// can): a master face came within reach of a slave face (its overlap
+    /// would count) without being one of the step's candidates, so that
+    /// the pattern holds no couplings for it. The search radius of the
+    /// pair doubles for the next begin_step().
+    std::string
+    fault() const;
+
     const std::vector<ContactPairSummary> &
     summary() const
     {
@@ -252,6 +260,15 @@ namespace DuctileContact
       NodalContactParameters law;
       double                 search_radius = 0., tolerance = 0.; ///< [m]
       double                 face_size = 0.; ///< smallest slave face size [m]
+      /// Contact pair/Search radius (0: from the step's motion, see
+      /// search_radius()) [m].
+      double given_radius = 0.;
+      /// Doubles in every step in which a face pair came within reach
+      /// outside the candidates.
+      double widen = 1.;
+      /// Of the last assembly: a face pair within reach that is no
+      /// candidate ("" when there is none).
+      std::string missed;
       /// Node positions of the last accepted step (slip increments).
       std::vector<dealii::Point<dim>> slave_committed, master_committed;
       /// Tangential traction per slave node of the last accepted step [Pa].
@@ -342,10 +359,34 @@ namespace DuctileContact
     static std::vector<std::vector<unsigned int>>
     search(const Pair &pair);
 
-    /// The face pairs of @p pair whose current boxes come close enough to
-    /// overlap, by slave face.
+    /// How far the box of a slave face reaches for master faces whose
+    /// overlap counts: half the smallest slave face size (an open gap
+    /// wider than that is not in contact in any case) [m].
+    static double
+    reach(const Pair &pair)
+    {
+      return 0.5 * pair.face_size;
+    }
+
+    /// The search radius of the step that starts at the current geometry
+    /// (the predicted one): Contact pair/Search radius, or reach() plus a
+    /// margin for the motion within the step, twice the largest predicted
+    /// motion of a slave node plus that of a master node since the last
+    /// accepted step and at least a quarter of the smallest slave face;
+    /// times the pair's widening.
+    static double
+    search_radius(const Pair &pair);
+
+    /// The face pairs of @p pair whose current boxes come within reach(),
+    /// by slave face.
     static std::vector<std::pair<unsigned int, unsigned int>>
     close_face_pairs(const Pair &pair);
+
+    /// A face pair of @p pair within reach() on the current geometry whose
+    /// faces may overlap but which is no candidate of the step: its
+    /// description, or "" when there is none.
+    static std::string
+    missed_pair(const Pair &pair);
 
     /// D, M, normals and aggregates of @p pair on its current geometry.
     /// Every rank integrates a share of the face pairs (share(); with
