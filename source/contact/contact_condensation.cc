@@ -9,6 +9,8 @@
 
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
+#include <deque>
+#include <map>
 #include <unordered_map>
 
 namespace DuctileContact
@@ -44,6 +46,97 @@ namespace DuctileContact
       for (const auto &[parent, w] : *entries)
         add(parent, weight * w);
   }
+
+
+
+  /**
+   * Sums of weighted tangent rows, one per target row, added to the matrix
+   * once each: a master row takes M_jl / A_j K_j from every slave node j
+   * whose multiplier support meets its shape function's (tens on
+   * prm/two_bodies.prm, each row ~375 entries), and one addition of their
+   * union costs a fraction of the matrix's per-entry searches.
+   */
+  class ContactProblem::RowSums
+  {
+  public:
+    /// Keeps @p row (a copy) and returns its key.
+    std::size_t
+    keep(const MatrixRow &row)
+    {
+      rows.push_back(row);
+      return rows.size() - 1;
+    }
+
+    /// Adds @p weight times the kept row @p key to the sum of the row of
+    /// @p dof, through @p constraints as add_row().
+    void
+    add(const std::size_t                key,
+        const double                     weight,
+        const types::global_dof_index    dof,
+        const AffineConstraints<double> &constraints)
+    {
+      if (!constraints.is_constrained(dof))
+        terms[dof].emplace_back(key, weight);
+      else if (const auto *entries = constraints.get_constraint_entries(dof))
+        for (const auto &[parent, w] : *entries)
+          terms[parent].emplace_back(key, weight * w);
+    }
+
+    /// Adds every sum to its row of @p tangent.
+    void
+    flush(TrilinosWrappers::BlockSparseMatrix &tangent) const
+    {
+      std::vector<double>                  sum;
+      std::vector<bool>                    touched;
+      std::vector<types::global_dof_index> columns;
+      std::vector<double>                  values;
+      for (unsigned int b = 0; b < tangent.n_block_cols(); ++b)
+        {
+          sum.assign(tangent.block(0, b).n(), 0.);
+          touched.assign(sum.size(), false);
+          for (const auto &[target, parts] : terms)
+            {
+              columns.clear();
+              for (const auto &[key, weight] : parts)
+                {
+                  const MatrixRow &row = rows[key];
+                  for (std::size_t e = 0; e < row.columns[b].size(); ++e)
+                    {
+                      const auto c = row.columns[b][e];
+                      if (!touched[c])
+                        {
+                          touched[c] = true;
+                          columns.push_back(c);
+                        }
+                      sum[c] += weight * row.values[b][e];
+                    }
+                }
+              if (columns.empty())
+                continue;
+              std::sort(columns.begin(), columns.end());
+              values.resize(columns.size());
+              for (std::size_t e = 0; e < columns.size(); ++e)
+                {
+                  values[e]           = sum[columns[e]];
+                  sum[columns[e]]     = 0.;
+                  touched[columns[e]] = false;
+                }
+              tangent.block(0, b).add(target,
+                                      columns.size(),
+                                      columns.data(),
+                                      values.data(),
+                                      true,
+                                      true);
+            }
+        }
+    }
+
+  private:
+    std::deque<MatrixRow> rows;
+    std::map<types::global_dof_index,
+             std::vector<std::pair<std::size_t, double>>>
+      terms;
+  };
 
 
 
@@ -224,12 +317,12 @@ namespace DuctileContact
 
 
   void
-  ContactProblem::combine_rows(
-    const Pair                          &pair,
-    const unsigned int                   j,
-    const CondensedNodes                &nodes,
-    const AffineConstraints<double>     &constraints,
-    TrilinosWrappers::BlockSparseMatrix &tangent) const
+  ContactProblem::combine_rows(const Pair                          &pair,
+                               const unsigned int                   j,
+                               const CondensedNodes                &nodes,
+                               const AffineConstraints<double>     &constraints,
+                               TrilinosWrappers::BlockSparseMatrix &tangent,
+                               RowSums &master_rows) const
   {
     const double  A    = pair.aggregates[j].area;
     const auto   &dofs = pair.slave.nodes[j].dofs;
@@ -280,9 +373,12 @@ namespace DuctileContact
                     dofs[r],
                     constraints,
                     tangent);
+        const std::size_t key = master_rows.keep(rows[c]);
         for (const auto &[l, m] : pair.master_row(j))
-          add_row(
-            rows[c], m / A, pair.master.nodes[l].dofs[c], constraints, tangent);
+          master_rows.add(key,
+                          m / A,
+                          pair.master.nodes[l].dofs[c],
+                          constraints);
       }
   }
 
@@ -428,16 +524,19 @@ namespace DuctileContact
       }
     // The bulk rows of node j are read (combine_rows()) before its
     // aggregate terms go into them.
+    RowSums master_rows;
     for (unsigned int j = 0; j < ns; ++j)
       {
         if (!nodes.owned[j])
           continue;
         add_condensed_vectors(pair, j, nodes, constraints, targets);
         if (targets.tangent)
-          combine_rows(pair, j, nodes, constraints, *targets.tangent);
+          combine_rows(
+            pair, j, nodes, constraints, *targets.tangent, master_rows);
       }
     if (!targets.tangent)
       return;
+    master_rows.flush(*targets.tangent);
     // Each rank adds the terms of its share of the gradients (rows owned
     // elsewhere are sent at the compress); the owner adds the direct ones.
     for (unsigned int j = 0; j < ns; ++j)

@@ -491,14 +491,19 @@ namespace DuctileContact
                           const dealii::AffineConstraints<double> &constraints,
                           const AssemblyTargets &targets) const;
 
+    /// Weighted sums of tangent rows per target row (contact_condensation.cc).
+    class RowSums;
+
     /// The bulk tangent rows of node @p j: S K_j in its own rows, M_jl /
-    /// A_j K_j added to the master rows.
+    /// A_j K_j into @p master_rows (added to the master rows once all slave
+    /// nodes are done: a master row takes the rows of many of them).
     void
     combine_rows(const Pair                                  &pair,
                  const unsigned int                           j,
                  const CondensedNodes                        &nodes,
                  const dealii::AffineConstraints<double>     &constraints,
-                 dealii::TrilinosWrappers::BlockSparseMatrix &tangent) const;
+                 dealii::TrilinosWrappers::BlockSparseMatrix &tangent,
+                 RowSums &master_rows) const;
 
     /// The tangent terms of node @p j through its aggregates (@p g holds
     /// their derivatives through dD and dM, all of them or this rank's
