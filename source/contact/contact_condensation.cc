@@ -288,30 +288,28 @@ namespace DuctileContact
         add(targets.internal_force, dofs[r], A * f[r]);
       }
     // Master rows: -M_jl f_j, right-hand side M_jl / A rhs_j, through the
-    // constraints.
-    const auto distribute = [](TrilinosWrappers::MPI::BlockVector *v,
-                               const AffineConstraints<double>    &c,
-                               const types::global_dof_index       dof,
-                               const double                        value) {
-      if (v == nullptr)
-        return;
-      Vector<double> x(1);
-      x[0] = value;
-      c.distribute_local_to_global(x,
-                                   std::vector<types::global_dof_index>{dof},
-                                   *v);
-    };
-    for (const auto &[l, m] : pair.master_row(j))
+    // constraints (all rows of the node at once: one call per vector).
+    const auto                          &row = pair.master_row(j);
+    std::vector<types::global_dof_index> master_dofs;
+    Vector<double> force(dim * row.size()), right(dim * row.size());
+    for (const auto &[l, m] : row)
       for (unsigned int r = 0; r < dim; ++r)
         {
-          const auto dof = pair.master.nodes[l].dofs[r];
-          distribute(targets.residual, constraints, dof, -m * f[r]);
-          distribute(targets.newton_rhs, constraints, dof, m / A * rhs[r]);
-          distribute(targets.internal_force,
-                     discretisation.hanging_node_constraints,
-                     dof,
-                     -m * f[r]);
+          force[master_dofs.size()] = -m * f[r];
+          right[master_dofs.size()] = m / A * rhs[r];
+          master_dofs.push_back(pair.master.nodes[l].dofs[r]);
         }
+    if (targets.residual)
+      constraints.distribute_local_to_global(force,
+                                             master_dofs,
+                                             *targets.residual);
+    if (targets.newton_rhs)
+      constraints.distribute_local_to_global(right,
+                                             master_dofs,
+                                             *targets.newton_rhs);
+    if (targets.internal_force)
+      discretisation.hanging_node_constraints.distribute_local_to_global(
+        force, master_dofs, *targets.internal_force);
   }
 
 
