@@ -50,11 +50,11 @@ namespace DuctileContact
 
 
   /**
-   * Sums of weighted tangent rows, one per target row, added to the matrix
-   * once each: a master row takes M_jl / A_j K_j from every slave node j
-   * whose multiplier support meets its shape function's (tens on
-   * prm/two_bodies.prm, each row ~375 entries), and one addition of their
-   * union costs a fraction of the matrix's per-entry searches.
+   * Sums of weighted tangent rows, one per target row of the displacement
+   * block, added to the matrix once each: a master row takes M_jl / A_j K_j
+   * from every slave node j whose multiplier support meets its shape function's
+   * (tens on prm/two_bodies.prm, each row ~375 entries), and one addition of
+   * their union costs a fraction of the matrix's per-entry searches.
    */
   class ContactProblem::RowSums
   {
@@ -96,6 +96,9 @@ namespace DuctileContact
           touched.assign(sum.size(), false);
           for (const auto &[target, parts] : terms)
             {
+              // Rows of the first block (displacements): the global row is
+              // the block's row.
+              Assert(target < tangent.block(0, 0).m(), ExcInternalError());
               columns.clear();
               for (const auto &[key, weight] : parts)
                 {
