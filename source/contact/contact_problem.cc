@@ -195,7 +195,8 @@ namespace DuctileContact
         pair.missed.clear();
         pair.search_radius = search_radius(pair);
 
-        std::vector<std::vector<unsigned int>> candidates = search(pair);
+        std::vector<std::vector<unsigned int>> candidates =
+          search(pair, pair.search_radius);
         if (candidates != pair.candidates)
           {
             changed         = true;
@@ -208,7 +209,7 @@ namespace DuctileContact
 
 
   std::vector<std::vector<unsigned int>>
-  ContactProblem::search(const Pair &pair)
+  ContactProblem::search(const Pair &pair, const double radius)
   {
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
     for (unsigned int m = 0; m < pair.master.faces.size(); ++m)
@@ -220,7 +221,7 @@ namespace DuctileContact
       {
         std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
         tree.query(boost::geometry::index::intersects(
-                     face_box(pair.slave, s, pair.search_radius)),
+                     face_box(pair.slave, s, radius)),
                    std::back_inserter(hits));
         for (const auto &hit : hits)
           candidates[s].push_back(hit.second);
@@ -253,29 +254,21 @@ namespace DuctileContact
 
 
   std::string
-  ContactProblem::missed_pair(const Pair &pair)
+  ContactProblem::missed_pair(
+    const Pair                                   &pair,
+    const std::vector<std::vector<unsigned int>> &near)
   {
-    std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
-    for (unsigned int m = 0; m < pair.master.faces.size(); ++m)
-      boxes.emplace_back(face_box(pair.master, m, 0.), m);
-    const auto tree = pack_rtree(boxes);
     for (unsigned int f = 0; f < pair.slave.faces.size(); ++f)
       {
-        std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
-        tree.query(boost::geometry::index::intersects(
-                     face_box(pair.slave, f, reach(pair))),
-                   std::back_inserter(hits));
         const auto &candidates = pair.candidates[f];
-        for (const auto &hit : hits)
-          if (!std::binary_search(candidates.begin(),
-                                  candidates.end(),
-                                  hit.second) &&
+        for (const unsigned int c : near[f])
+          if (!std::binary_search(candidates.begin(), candidates.end(), c) &&
               faces_may_overlap(pair.slave_faces[f],
-                                pair.master.current_face(hit.second)))
+                                pair.master.current_face(c)))
             {
               std::ostringstream s;
               s << "contact pair " << pair.index + 1 << ": the master face at ("
-                << pair.master.current_face(hit.second).position({0.5, 0.5})
+                << pair.master.current_face(c).position({0.5, 0.5})
                 << ") m came within reach of the slave face at ("
                 << pair.slave_faces[f].position({0.5, 0.5})
                 << ") m but is not among the candidates of the step "
@@ -507,26 +500,22 @@ namespace DuctileContact
 
 
   std::vector<std::pair<unsigned int, unsigned int>>
-  ContactProblem::close_face_pairs(const Pair &pair)
+  ContactProblem::close_face_pairs(
+    const Pair                                   &pair,
+    const std::vector<std::vector<unsigned int>> &near)
   {
     std::vector<std::pair<unsigned int, unsigned int>> close;
     for (unsigned int f = 0; f < pair.slave.faces.size(); ++f)
       {
-        if (pair.candidates[f].empty())
-          continue;
-        const auto slave_box =
-          face_box(pair.slave, f, reach(pair)).get_boundary_points();
-        for (const unsigned int c : pair.candidates[f])
-          {
-            const auto master_box =
-              face_box(pair.master, c, 0.).get_boundary_points();
-            bool apart = false;
-            for (unsigned int d = 0; d < dim; ++d)
-              apart = apart || slave_box.first[d] > master_box.second[d] ||
-                      master_box.first[d] > slave_box.second[d];
-            if (!apart)
-              close.emplace_back(f, c);
-          }
+        // Both lists are sorted.
+        std::vector<unsigned int> both;
+        std::set_intersection(near[f].begin(),
+                              near[f].end(),
+                              pair.candidates[f].begin(),
+                              pair.candidates[f].end(),
+                              std::back_inserter(both));
+        for (const unsigned int c : both)
+          close.emplace_back(f, c);
       }
     return close;
   }
@@ -534,10 +523,11 @@ namespace DuctileContact
 
 
   std::vector<double>
-  ContactProblem::integrate_share(Pair &pair, const bool derivatives) const
+  ContactProblem::integrate_share(
+    Pair                                              &pair,
+    std::vector<std::pair<unsigned int, unsigned int>> close,
+    const bool                                         derivatives) const
   {
-    std::vector<std::pair<unsigned int, unsigned int>> close =
-      close_face_pairs(pair);
     // With derivatives the clipping alone first (every rank): a pair that
     // does not overlap costs little in double, but as much as one that
     // does with derivatives, and the shares should hold equal work.
@@ -665,7 +655,9 @@ namespace DuctileContact
     // integrates an equal share, and all gather the operators (in their
     // order). Nothing is gained by giving the rank that owns the slave
     // nodes fewer: its condensation (condense()) starts after the gather.
-    add_operators(pair, integrate_share(pair, derivatives));
+    const auto near = search(pair, reach(pair));
+    add_operators(
+      pair, integrate_share(pair, close_face_pairs(pair, near), derivatives));
 
     // Aggregates.
     for (unsigned int j = 0; j < n; ++j)
@@ -692,7 +684,7 @@ namespace DuctileContact
       fold_hanging_nodes(pair);
     // Kept until the next step: a missed pair widens its search.
     if (pair.missed.empty())
-      pair.missed = missed_pair(pair);
+      pair.missed = missed_pair(pair, near);
   }
 
 

@@ -266,13 +266,13 @@ namespace DuctileContact
     for (Pair &pair : data)
       {
         // D, M and the normals on the geometry of u, with candidates of
-        // their own (the step's search comes later and decides the
-        // sparsity pattern).
+        // their own: every master face within reach (the step's search
+        // comes later and decides the sparsity pattern).
         pair.slave.update(u, discretisation);
         pair.master.update(u, discretisation);
         std::vector<std::vector<unsigned int>> step_candidates =
           std::move(pair.candidates);
-        pair.candidates = search(pair);
+        pair.candidates = search(pair, reach(pair));
         integrate(pair, false);
         pair.candidates = std::move(step_candidates);
 

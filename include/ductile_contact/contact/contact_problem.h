@@ -354,10 +354,12 @@ namespace DuctileContact
     void
     check_condensable(const Pair &pair) const;
 
-    /// Candidate master faces of each slave face of @p pair on the
-    /// current geometry (bounding boxes enlarged by the search radius).
+    /// The master faces of @p pair whose current bounding boxes meet each
+    /// slave face's enlarged by @p radius, sorted, by slave face: the
+    /// candidates of a step (radius search_radius()) or the faces within
+    /// reach() of an assembly.
     static std::vector<std::vector<unsigned int>>
-    search(const Pair &pair);
+    search(const Pair &pair, const double radius);
 
     /// How far the box of a slave face reaches for master faces whose
     /// overlap counts: half the smallest slave face size (an open gap
@@ -377,16 +379,18 @@ namespace DuctileContact
     static double
     search_radius(const Pair &pair);
 
-    /// The face pairs of @p pair whose current boxes come within reach(),
-    /// by slave face.
+    /// The candidate face pairs of @p pair among @p near (search() with
+    /// reach() on the current geometry), by slave face.
     static std::vector<std::pair<unsigned int, unsigned int>>
-    close_face_pairs(const Pair &pair);
+    close_face_pairs(const Pair                                   &pair,
+                     const std::vector<std::vector<unsigned int>> &near);
 
-    /// A face pair of @p pair within reach() on the current geometry whose
-    /// faces may overlap but which is no candidate of the step: its
-    /// description, or "" when there is none.
+    /// A face pair of @p pair among @p near whose faces may overlap but
+    /// which is no candidate of the step: its description, or "" when
+    /// there is none.
     static std::string
-    missed_pair(const Pair &pair);
+    missed_pair(const Pair                                   &pair,
+                const std::vector<std::vector<unsigned int>> &near);
 
     /// D, M, normals and aggregates of @p pair on its current geometry.
     /// Every rank integrates a share of the face pairs (share(); with
@@ -395,12 +399,14 @@ namespace DuctileContact
     void
     integrate(Pair &pair, const bool derivatives);
 
-    /// integrate(): this rank's share of the face pairs of @p pair, with
-    /// their derivatives kept in pair.linearised_operators if
+    /// integrate(): this rank's share of the @p close face pairs of
+    /// @p pair, with their derivatives kept in pair.linearised_operators if
     /// @p derivatives; returns per overlapping pair the record f, c, D
     /// (its row sums with SlaveWeights::lumped), M.
     std::vector<double>
-    integrate_share(Pair &pair, const bool derivatives) const;
+    integrate_share(Pair                                              &pair,
+                    std::vector<std::pair<unsigned int, unsigned int>> close,
+                    const bool derivatives) const;
 
     /// integrate(): gathers the records of integrate_share() from all
     /// ranks, in rank order, into pair.overlaps, D and M.
