@@ -15,9 +15,19 @@
 //  - The linearisation with hanging slave nodes (semi-smooth Newton): the
 //    coarse block on the plate of contact_semi_smooth (mu_c = 0.2) with one
 //    cell of the block's bottom refined; the condensed tangent against
-//    central finite differences of the residual (the residual has kinks,
-//    so the error is compared with the one without the refinement, as are
-//    the Newton iterations).
+//    central finite differences of the residual, with and without the
+//    refinement, and the Newton iterations of the two runs. Session 46 measured
+//    what the checks can tell apart: the finite differences' floor is ~1e-5
+//    (three mortar quadratures that agree to 1e-6: 4.5e-6 to 8.8e-6 without the
+//    refinement, 6.2e-6 to 1.0e-5 with it), while a tangent without the
+//    hanging nodes' terms through their positions errs by 1e-2 to 1e-1;
+//    so the error must stay below 1e-4 (until then: 1e-3 and twice the
+//    error without the refinement, which the floor's scatter crossed).
+//    The Newton iterations follow the path of the stick/slip and active
+//    sets: 15, 18 and 14 without the refinement and 15, 16 and 18 with it
+//    for the three quadratures (19 with the broken tangent), so the
+//    refined run may take 1.5 times as many: a check against divergence
+//    and cutbacks, not of the linearisation.
 //  - Adaptive refinement with contact: the patch with a plastic lower cube
 //    (yield at 0.85 MPa, 1.25 MPa at the end) and Coulomb friction mu_c =
 //    0.05,
@@ -228,14 +238,13 @@ main(int argc, char **argv)
            "= 0.2:"
         << std::endl
         << "  condensed tangent = finite differences of the residual "
-           "(1e-3 at the last update of each step, at most twice the error "
-           "without the refinement): "
-        << Testing::yes_no(refined.first < 1e-3 &&
-                           refined.first < 2. * plain.first)
+           "(1e-4 at the last update of each step, as without the "
+           "refinement): "
+        << Testing::yes_no(refined.first < 1e-4 && plain.first < 1e-4)
         << std::endl
-        << "  Newton iterations of the 3 steps at most 2 more than without "
-           "the refinement: "
-        << Testing::yes_no(refined.second <= plain.second + 2) << std::endl;
+        << "  Newton iterations of the 3 steps at most 1.5 times those "
+           "without the refinement: "
+        << Testing::yes_no(refined.second <= 1.5 * plain.second) << std::endl;
   }
 
   // Adaptive refinement against the refined mesh from the start.

@@ -129,38 +129,47 @@ namespace DuctileContact
       return output;
     }
 
-    /// A point of a triangle rule: barycentric coordinates of (centroid,
-    /// a, b) and the weight, the weights summing to 1.
+    /// A point of a triangle rule: barycentric coordinates of the
+    /// triangle's corners (apex, a, b) and the weight, the weights summing
+    /// to 1.
     struct TrianglePoint
     {
       double l0, l1, l2, w;
     };
 
     /**
-     * The symmetric 12-point rule of Dunavant (1985) on the triangle, exact
-     * for polynomials of degree 6 with positive weights: three orbits of
-     * 3, 3 and 6 points. It replaced (session 45) the 16-point collapsed
-     * Gauss rule of the same degree; against 12 x 12-point collapsed
-     * rules on three face pairs (a two_bodies-like pair, two distorted
-     * curved ones) the operators moved by 3.9e-7, 3.6e-6, 1.0e-4
-     * (relative) instead of 1.3e-6, 3.5e-6, 1.0e-4: as accurate with a
-     * quarter fewer points (the integrands, shape functions of the inverse
-     * face maps, are smooth but not polynomial).
+     * The symmetric 16-point rule of Dunavant (1985) on the triangle, exact
+     * for polynomials of degree 8 with positive weights: the centroid and
+     * orbits of 3, 3, 3 and 6 points. Degree 8 integrates the product of
+     * two quad9 shape functions exactly where the face maps are affine
+     * (flat parallelogram faces, e.g. two_bodies), so that the overlap can
+     * be cut into the fewest triangles (a fan from one vertex: 2 for a
+     * quadrilateral). Session 46 replaced the 12-point degree-6 rule on a
+     * fan from the centroid (4 triangles for a quadrilateral, 48 points
+     * against 32 now); against 12 x 12-point collapsed Gauss rules on three
+     * face pairs (a two_bodies-like pair and two distorted curved ones)
+     * the operators move by 3e-15, 2.4e-6, 1.2e-5 (relative) instead of
+     * 3.9e-7, 3.6e-6, 1.0e-4, with a third fewer points. (The curved
+     * pairs' integrands have kinks where back-projected points are clamped
+     * to the face: the two references, on either fan, differ by 7.8e-7
+     * and 3.2e-5 themselves.)
      */
     std::vector<TrianglePoint>
     make_triangle_rule()
     {
       std::vector<TrianglePoint> rule;
-      const auto                 orbit3 = [&](const double a, const double w) {
+      rule.push_back({1. / 3., 1. / 3., 1. / 3., 0.144315607677787});
+      const auto orbit3 = [&](const double a, const double w) {
         const double b = 1. - 2. * a;
         rule.push_back({b, a, a, w});
         rule.push_back({a, b, a, w});
         rule.push_back({a, a, b, w});
       };
-      orbit3(0.063089014491502, 0.050844906370207);
-      orbit3(0.249286745170910, 0.116786275726379);
-      const double a = 0.053145049844817, b = 0.310352451033784, c = 1. - a - b,
-                   w = 0.082851075618374;
+      orbit3(0.459292588292723, 0.095091634267285);
+      orbit3(0.170569307751760, 0.103217370534718);
+      orbit3(0.050547228317031, 0.032458497623198);
+      const double a = 0.008394777409958, b = 0.263112829634638, c = 1. - a - b,
+                   w = 0.027230314174435;
       for (const auto &p : {std::array<double, 3>{{a, b, c}},
                             std::array<double, 3>{{a, c, b}},
                             std::array<double, 3>{{b, a, c}},
@@ -358,15 +367,13 @@ namespace DuctileContact
       const Point<2> s_start(0.25 * (sq % 2) + 0.25, 0.25 * (sq / 2) + 0.25);
       const Point<2> m_start(0.25 * (mq % 2) + 0.25, 0.25 * (mq / 2) + 0.25);
       const std::vector<Vec2<Number>> &overlap = o.polygon;
-      Vec2<Number>                     centroid{{0., 0.}};
-      for (const Vec2<Number> &p : overlap)
-        for (unsigned int c = 0; c < 2; ++c)
-          centroid[c] += p[c] / static_cast<double>(overlap.size());
-      for (std::size_t e = 0; e < overlap.size(); ++e)
+      // A fan from the first vertex (the polygon is convex).
+      const Vec2<Number> &apex = overlap[0];
+      for (std::size_t e = 1; e + 1 < overlap.size(); ++e)
         {
           const Vec2<Number> &a             = overlap[e];
-          const Vec2<Number> &b             = overlap[(e + 1) % overlap.size()];
-          const Number        triangle_area = 0.5 * orient(centroid, a, b);
+          const Vec2<Number> &b             = overlap[e + 1];
+          const Number        triangle_area = 0.5 * orient(apex, a, b);
           if (!(value_of(triangle_area) > 0.))
             continue;
           for (const TrianglePoint &g : triangle_rule())
@@ -374,8 +381,7 @@ namespace DuctileContact
               Vec<Number> q = o.centre;
               for (unsigned int k = 0; k < 2; ++k)
                 {
-                  const Number p =
-                    g.l0 * centroid[k] + g.l1 * a[k] + g.l2 * b[k];
+                  const Number p = g.l0 * apex[k] + g.l1 * a[k] + g.l2 * b[k];
                   const Vec<Number> &t = k == 0 ? o.t1 : o.t2;
                   for (unsigned int c = 0; c < dim; ++c)
                     q[c] += p * t[c];

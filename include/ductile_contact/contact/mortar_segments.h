@@ -30,8 +30,8 @@ namespace DuctileContact
    * through its centre, normal n0 = the sub-quad normal; the vertices of every
    * master sub-quad that faces it (n0 . n_m < 0) are projected onto the plane,
    * the two convex polygons are clipped (Sutherland-Hodgman), the overlap is
-   * split into triangles (fan from its centroid) with a 12-point symmetric
-   * rule of degree 6 each, and every Gauss point is projected back along n0
+   * split into triangles (a fan from one vertex) with a 16-point symmetric
+   * rule of degree 8 each, and every point is projected back along n0
    * onto the curved slave and master faces (parameter points clamped to the
    * face). The weights are areas on the plane, so that a uniform field is
    * integrated over the same overlap on both sides: this is what makes the
