@@ -5,6 +5,7 @@
 
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
+#include <atomic>
 #include <string>
 #include <utility>
 
@@ -154,7 +155,158 @@ namespace DuctileContact
               }
           }
     }
+
+    /// The Epetra matrix of block (I, J) of @p K, writable (deal.II hands
+    /// it out as const only; its values are changed through row views, as
+    /// TrilinosWrappers::SparseMatrix::add() changes them).
+    Epetra_CrsMatrix &
+    epetra_block(TrilinosWrappers::BlockSparseMatrix &K,
+                 const unsigned int                   I,
+                 const unsigned int                   J)
+    {
+      auto &A = const_cast<Epetra_CrsMatrix &>(K.block(I, J).trilinos_matrix());
+      // FillComplete sorts each row's local column indices.
+      AssertThrow(A.Filled(),
+                  ExcMessage("The tangent's pattern is not final."));
+      return A;
+    }
   } // namespace
+
+
+
+  std::uint64_t
+  new_pattern_id()
+  {
+    static std::atomic<std::uint64_t> last{0};
+    return ++last;
+  }
+
+
+
+  void
+  CellPositions::use(const std::uint64_t pattern, const unsigned int n_cells)
+  {
+    if (pattern != this->pattern || cells.size() != n_cells)
+      {
+        cells.assign(n_cells, Cell());
+        this->pattern = pattern;
+      }
+  }
+
+
+
+  void
+  CellPositions::clear()
+  {
+    cells.clear();
+    pattern = 0;
+  }
+
+
+
+  void
+  CellPositions::find(Cell                                       &c,
+                      const std::vector<types::global_dof_index> &indices,
+                      TrilinosWrappers::BlockSparseMatrix        &K)
+  {
+    const BlockIndices &blocks = K.get_row_indices();
+    const unsigned int  n      = indices.size();
+    c.dofs                     = indices;
+    c.row_block.resize(n);
+    c.row.resize(n);
+    c.column_block.resize(n);
+    c.position.assign(n * n, -1);
+    std::vector<int> in_block(n);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const auto [b, i] = blocks.global_to_local(indices[k]);
+        c.row_block[k]    = b;
+        c.column_block[k] = b;
+        in_block[k]       = static_cast<int>(i);
+      }
+    for (unsigned int r = 0; r < n; ++r)
+      {
+        const unsigned int I = c.row_block[r];
+        c.row[r]             = epetra_block(K, I, 0).LRID(in_block[r]);
+        if (c.row[r] < 0)
+          continue;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const Epetra_CrsMatrix &A = epetra_block(K, I, c.column_block[k]);
+            // The blocks of a block row share its row map.
+            AssertThrow(A.LRID(in_block[r]) == c.row[r], ExcInternalError());
+            const int column = A.LCID(in_block[k]);
+            if (column < 0)
+              continue;
+            int     length;
+            double *values;
+            int    *entries;
+            A.ExtractMyRowView(c.row[r], length, values, entries);
+            const int *p = std::lower_bound(entries, entries + length, column);
+            if (p != entries + length && *p == column)
+              c.position[r * n + k] = static_cast<int>(p - entries);
+          }
+      }
+  }
+
+
+
+  void
+  CellPositions::add(const unsigned int                          cell,
+                     const FullMatrix<double>                   &matrix,
+                     const std::vector<types::global_dof_index> &indices,
+                     TrilinosWrappers::BlockSparseMatrix        &K)
+  {
+    AssertIndexRange(cell, cells.size());
+    Cell &c = cells[cell];
+    if (c.dofs != indices)
+      find(c, indices, K);
+#ifdef DEBUG
+    {
+      Cell fresh;
+      find(fresh, indices, K);
+      Assert(fresh.row == c.row && fresh.position == c.position,
+             ExcMessage("The tangent's pattern changed under the same name "
+                        "(AssemblyTargets::pattern)."));
+    }
+#endif
+    const unsigned int                 n        = indices.size();
+    const unsigned int                 n_blocks = K.n_block_cols();
+    thread_local std::vector<double *> row_values;
+    row_values.resize(n_blocks);
+    for (unsigned int r = 0; r < n; ++r)
+      {
+        const unsigned int I = c.row_block[r];
+        if (c.row[r] < 0)
+          {
+            // Owned by another rank: Trilinos's non-local storage.
+            thread_local FullMatrix<double> one_row;
+            one_row.reinit(1, n);
+            for (unsigned int k = 0; k < n; ++k)
+              one_row(0, k) = matrix(r, k);
+            add_unconstrained(one_row, {indices[r]}, indices, K);
+            continue;
+          }
+        for (unsigned int J = 0; J < n_blocks; ++J)
+          {
+            int  length;
+            int *entries;
+            epetra_block(K, I, J).ExtractMyRowView(c.row[r],
+                                                   length,
+                                                   row_values[J],
+                                                   entries);
+          }
+        const double *m        = &matrix(r, 0);
+        const int    *position = &c.position[r * n];
+        for (unsigned int k = 0; k < n; ++k)
+          if (position[k] >= 0)
+            row_values[c.column_block[k]][position[k]] += m[k];
+          else
+            AssertThrow(m[k] == 0.,
+                        ExcMessage("A tangent entry lies outside the "
+                                   "sparsity pattern."));
+      }
+  }
 
 
 
@@ -165,11 +317,16 @@ namespace DuctileContact
           const std::vector<types::global_dof_index> &indices,
           const AffineConstraints<double>            &constraints,
           const AffineConstraints<double>            &hanging_nodes,
-          const AssemblyTargets                      &targets)
+          const AssemblyTargets                      &targets,
+          CellPositions                              *positions,
+          const unsigned int                          cell)
   {
     if (targets.tangent && !any_constrained(indices, constraints))
       {
-        add_unconstrained(matrix, indices, indices, *targets.tangent);
+        if (positions)
+          positions->add(cell, matrix, indices, *targets.tangent);
+        else
+          add_unconstrained(matrix, indices, indices, *targets.tangent);
         if (targets.newton_rhs)
           targets.newton_rhs->add(indices, rhs);
       }

@@ -41,6 +41,7 @@ namespace DuctileContact
       discretisation.triangulation.signals.any_change.connect([this]() {
         crack_matrices.clear();
         cell_face_matrices.clear();
+        cell_positions.clear();
       });
   }
 
@@ -123,6 +124,15 @@ namespace DuctileContact
                        CellQuantities                  *quantities) const
   {
     AssemblyReduction sums;
+    // The places of the cells' entries in the tangent, kept while its
+    // pattern stays the same.
+    CellPositions *positions = nullptr;
+    if (pass.targets && pass.targets->tangent && pass.targets->pattern != 0)
+      {
+        cell_positions.use(pass.targets->pattern,
+                           discretisation.triangulation.n_active_cells());
+        positions = &cell_positions;
+      }
     using Iterator = FilteredIterator<DoFHandler<dim>::active_cell_iterator>;
     const auto worker =
       [&](const Iterator &cell, CellScratch &scratch, CellCopy &copy) {
@@ -139,7 +149,9 @@ namespace DuctileContact
                   rows.indices,
                   constraints,
                   discretisation.hanging_node_constraints,
-                  *pass.targets);
+                  *pass.targets,
+                  positions,
+                  copy.cell_index);
           for (unsigned int f = 0; f < copy.n_faces; ++f)
             {
               const LocalRows &face = copy.faces[f];

@@ -1,6 +1,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <ductile_contact/assembly/scatter.h>
 #include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/coupled/coupled_problem.h>
 #include <ductile_contact/discretisation/constraints.h>
@@ -106,6 +107,7 @@ namespace DuctileContact
       contact->add_couplings(sp, pattern_constraints);
     sp.compress();
     tangent.reinit(sp);
+    tangent_pattern = new_pattern_id();
 
     for (auto *v : {&newton_rhs, &residual, &force})
       v->reinit(discretisation.owned_partitioning, comm);
@@ -323,6 +325,8 @@ namespace DuctileContact
   CoupledProblem::assemble_recording(const Vector &x, Matrix *matrix)
   {
     AssemblyTargets targets{matrix, &newton_rhs, &residual, &force};
+    if (matrix == &tangent)
+      targets.pattern = tangent_pattern;
     targets.branch_record = &branches;
     targets.branches      = Branches::record;
     last_info             = assemble(targets);

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -221,6 +222,12 @@ namespace DuctileContact
     /// Branches::frozen reads.
     BranchRecord *branch_record = nullptr;
     Branches      branches      = Branches::evaluate;
+    /// Names the sparsity pattern of @p tangent: a number that its owner
+    /// takes from new_pattern_id() (scatter.h) whenever it builds the
+    /// pattern, or 0 when unknown. With a name, the bulk assembly keeps
+    /// where each cell's entries lie in the matrix (CellPositions) from
+    /// one assembly to the next.
+    std::uint64_t pattern = 0;
   };
 
   /// The load step being solved: time, step and the accepted state before.

@@ -6,6 +6,7 @@
 
 #include <ductile_contact/assembly/assembly_data.h>
 #include <ductile_contact/assembly/quadrature_history.h>
+#include <ductile_contact/assembly/scatter.h>
 #include <ductile_contact/discretisation/boundary_condition.h>
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/materials/body_material.h>
@@ -244,7 +245,9 @@ namespace DuctileContact
     /// face_matrices() per active cell index, sized and cleared with
     /// crack_matrices (same ownership rule).
     mutable std::vector<CellFaceMatrices> cell_face_matrices;
-    boost::signals2::connection           mesh_changed;
+    /// Where each cell's tangent entries lie (AssemblyTargets::pattern).
+    mutable CellPositions       cell_positions;
+    boost::signals2::connection mesh_changed;
 
     /// Traction boundaries, looked up per face.
     std::map<dealii::types::boundary_id, const BoundaryCondition *> tractions;

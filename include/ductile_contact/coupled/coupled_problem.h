@@ -14,6 +14,7 @@
 #include <ductile_contact/solver/nonlinear_problem.h>
 
 #include <array>
+#include <cstdint>
 #include <deque>
 #include <memory>
 #include <optional>
@@ -182,7 +183,9 @@ namespace DuctileContact
     dealii::AffineConstraints<double> constraints;
 
     dealii::TrilinosWrappers::BlockSparseMatrix tangent;
-    Vector newton_rhs, residual, force, u_ghosted;
+    /// The name of tangent's sparsity pattern (AssemblyTargets::pattern).
+    std::uint64_t tangent_pattern = 0;
+    Vector        newton_rhs, residual, force, u_ghosted;
 
     AssemblyInfo last_info, accepted_info;
     /// The branches of the last tangent assembly (frozen in the line
