@@ -96,15 +96,17 @@ namespace DuctileContact
          const std::vector<Vec2<Number>> &clipper,
          const double                     tolerance)
     {
-      std::vector<Vec2<Number>> output = subject;
+      std::vector<Vec2<Number>> output = subject, input;
       for (std::size_t e = 0; e < clipper.size() && !output.empty(); ++e)
         {
           const Vec2<Number> &a = clipper[e];
           const Vec2<Number> &b = clipper[(e + 1) % clipper.size()];
           const double        length =
             std::hypot(value_of(b[0] - a[0]), value_of(b[1] - a[1]));
-          const double                    eps   = tolerance * length;
-          const std::vector<Vec2<Number>> input = output;
+          const double eps = tolerance * length;
+          // The last edge's output is this edge's input (swapped: an AD
+          // vertex is 110 numbers).
+          input.swap(output);
           output.clear();
           for (std::size_t i = 0; i < input.size(); ++i)
             {
@@ -296,9 +298,28 @@ namespace DuctileContact
                      const FaceCoordinates<Number> &master,
                      const Visitor                 &visit)
     {
+      // Which sub-quads overlap is decided on the values: with derivatives
+      // it is found in plain numbers first, so that the AD work below goes
+      // to those pairs only (on two_bodies 6 of the 16).
+      std::array<bool, 16> overlaps;
+      overlaps.fill(true);
+      if constexpr (!std::is_same_v<Number, double>)
+        {
+          overlaps.fill(false);
+          for_each_overlap(coordinates_of(values_of(slave)),
+                           coordinates_of(values_of(master)),
+                           [&](const SubQuadOverlap<double> &o) {
+                             overlaps[4 * o.slave_quad + o.master_quad] = true;
+                             return true;
+                           });
+        }
       SubQuadOverlap<Number> o;
       for (unsigned int sq = 0; sq < 4; ++sq)
         {
+          if (std::none_of(overlaps.begin() + 4 * sq,
+                           overlaps.begin() + 4 * sq + 4,
+                           [](const bool b) { return b; }))
+            continue;
           const auto s_nodes = sub_quad(sq % 2, sq / 2);
           o.slave_quad       = sq;
           o.centre           = Vec<Number>{{0., 0., 0.}};
@@ -328,6 +349,8 @@ namespace DuctileContact
 
           for (unsigned int mq = 0; mq < 4; ++mq)
             {
+              if (!overlaps[4 * sq + mq])
+                continue;
               const auto        m_nodes = sub_quad(mq % 2, mq / 2);
               const Vec<Number> n_m =
                 cross(minus(master[m_nodes[2]], master[m_nodes[0]]),
@@ -376,16 +399,21 @@ namespace DuctileContact
           const Number        triangle_area = 0.5 * orient(apex, a, b);
           if (!(value_of(triangle_area) > 0.))
             continue;
+          // The triangle's corners in space: then each point is a
+          // combination of three vectors with plain coefficients.
+          std::array<Vec<Number>, 3> corner;
+          for (unsigned int v = 0; v < 3; ++v)
+            {
+              const Vec2<Number> &p = v == 0 ? apex : v == 1 ? a : b;
+              for (unsigned int c = 0; c < dim; ++c)
+                corner[v][c] = o.centre[c] + p[0] * o.t1[c] + p[1] * o.t2[c];
+            }
           for (const TrianglePoint &g : triangle_rule())
             {
-              Vec<Number> q = o.centre;
-              for (unsigned int k = 0; k < 2; ++k)
-                {
-                  const Number p = g.l0 * apex[k] + g.l1 * a[k] + g.l2 * b[k];
-                  const Vec<Number> &t = k == 0 ? o.t1 : o.t2;
-                  for (unsigned int c = 0; c < dim; ++c)
-                    q[c] += p * t[c];
-                }
+              Vec<Number> q;
+              for (unsigned int c = 0; c < dim; ++c)
+                q[c] = g.l0 * corner[0][c] + g.l1 * corner[1][c] +
+                       g.l2 * corner[2][c];
               MortarPointOf<Number> point;
               if (!project(
                     slave, 0, slave_face, q, o.n0, s_start, point.slave) ||

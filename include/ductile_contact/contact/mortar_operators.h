@@ -53,7 +53,10 @@ namespace DuctileContact
    * whole computation (basis coefficients included, they depend on the
    * slave face's shape) runs in ContactAD: that is the consistent
    * linearisation of D and M (contact_problem.h). The coefficients in
-   * ContactAD are made once per MortarFace, for all its master faces.
+   * ContactAD are made once per MortarFace, for all its master faces. With
+   * lumped weights the sums over the points are two matrix products of the
+   * points' derivatives by the chain rule instead (doc/contact.md section
+   * 7, "dD, dM").
    */
   class MortarFace
   {
