@@ -224,27 +224,39 @@ namespace DuctileContact
         c.column_block[k] = b;
         in_block[k]       = static_cast<int>(i);
       }
+    // Each column's local index in the column map of block (I, J), looked
+    // up once per block row I (a hash search each).
+    const unsigned int n_blocks = K.n_block_rows();
+    std::vector<int>   column_id(n_blocks * n, -2);
     for (unsigned int r = 0; r < n; ++r)
       {
         const unsigned int I = c.row_block[r];
         c.row[r]             = epetra_block(K, I, 0).LRID(in_block[r]);
         if (c.row[r] < 0)
           continue;
-        for (unsigned int k = 0; k < n; ++k)
+        if (column_id[I * n] == -2)
+          for (unsigned int k = 0; k < n; ++k)
+            column_id[I * n + k] =
+              epetra_block(K, I, c.column_block[k]).LCID(in_block[k]);
+        for (unsigned int J = 0; J < n_blocks; ++J)
           {
-            const Epetra_CrsMatrix &A = epetra_block(K, I, c.column_block[k]);
+            Epetra_CrsMatrix &A = epetra_block(K, I, J);
             // The blocks of a block row share its row map.
             AssertThrow(A.LRID(in_block[r]) == c.row[r], ExcInternalError());
-            const int column = A.LCID(in_block[k]);
-            if (column < 0)
-              continue;
             int     length;
             double *values;
             int    *entries;
             A.ExtractMyRowView(c.row[r], length, values, entries);
-            const int *p = std::lower_bound(entries, entries + length, column);
-            if (p != entries + length && *p == column)
-              c.position[r * n + k] = static_cast<int>(p - entries);
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                const int column = column_id[I * n + k];
+                if (c.column_block[k] != J || column < 0)
+                  continue;
+                const int *p =
+                  std::lower_bound(entries, entries + length, column);
+                if (p != entries + length && *p == column)
+                  c.position[r * n + k] = static_cast<int>(p - entries);
+              }
           }
       }
   }
