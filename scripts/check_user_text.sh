@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Checks that the user-facing text says what is, not how it came to be: no
+# development sessions ("session 45", "sessions 35-36", "this session"), no
+# issue numbers ("issue #4", "Issue 28", "(#24)"), no "the issue's target",
+# no "wave", no "until ... lands". Lists FILE:LINE: TEXT for each mention and
+# exits 1 if there is any, 0 otherwise.
+# Usage: scripts/check_user_text.sh [FILE...]
+#   default: README.md, doc/, prm/ (the .prm files and the mesh scripts),
+#   scripts/ (but this file, whose comments name the patterns),
+#   tests/README*, and every README.md and results.md under benchmarks/.
+# A folder name that records where data came from (benchmarks/performance/
+# runs/two_bodies/session-45, single-session-33) is data, not prose: a
+# "session" joined to a path or a name by '/', '-' or '_' is not flagged.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+
+if (($#)); then
+  files=("$@")
+else
+  files=(README.md)
+  while IFS= read -r -d '' f; do files+=("$f"); done < <(
+    find doc scripts tests benchmarks prm -type f \( \
+         -path 'doc/*.md' \
+      -o -path 'prm/*.prm' -o -path 'prm/meshes/*.py' \
+      -o \( -path 'scripts/*' ! -name '*.pyc' ! -name check_user_text.sh \) \
+      -o -path 'tests/README*' \
+      -o -path 'benchmarks/*' \( -name README.md -o -name results.md \) \
+    \) -print0 | sort -z)
+fi
+
+perl -ne '
+  BEGIN { $found = 0 }
+  # A history mention, case-insensitive:
+  our $history = qr{
+      (?<![\w/-])sessions?(?![\w/-])          # session, sessions, session 45
+    | (?<![\w/-])session[ -]?\d+              # session 45, session-45 in prose
+    | \bissues?\s*\#?\s*\d+                  # issue #4, Issue 28, issues #4 and #3
+    | (?<![\w&/\#])\#\d{1,3}\b               # (#24), #28
+    | \b(?:the|this|that)(?:\s+[a-z]+)?\s+issue(?:s|\x27s)?\b  # the issue, this issue
+    | \bwaves?\b                             # wave
+    | \buntil\b.*\blands\b                   # until frictional contact lands
+  }xi;
+  if (/$history/) {
+    chomp;
+    print "$ARGV:$.: $_\n";
+    $found = 1;
+  }
+  close ARGV if eof;   # restart $. for each file
+  END { exit $found }
+' "${files[@]}" && status=0 || status=$?
+
+if ((status == 0)); then
+  echo "check_user_text: no development history in ${#files[@]} files"
+else
+  echo "check_user_text: development history found (above); say what is instead" >&2
+fi
+exit "$status"
