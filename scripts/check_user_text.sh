@@ -13,11 +13,11 @@
 # "session" joined to a path or a name by '/', '-' or '_' is not flagged.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-cd "$root"
 
 if (($#)); then
   files=("$@")
 else
+  cd "$root"
   files=(README.md)
   while IFS= read -r -d '' f; do files+=("$f"); done < <(
     find doc scripts tests benchmarks prm -type f \( \
