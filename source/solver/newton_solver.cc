@@ -352,7 +352,7 @@ namespace DuctileContact
     // and while the problem's rows follow the iterate (keeps_tangent()
     // false: the phase-field bound's active set), they go to the relative
     // tolerance. prm/sent_coarse.prm's crack phase stalled without either
-    // rule (benchmarks/performance, session 39).
+    // rule (benchmarks/performance/results.md).
     bool fast = true;
     for (unsigned int it = 0;; ++it)
       {

@@ -146,7 +146,7 @@ namespace DuctileContact
       "1986); 1: below the current one. While a crack runs, a full Newton "
       "update often raises the residual for an iteration on the way to the "
       "solution, and backtracking to a strict decrease crawls and fails: "
-      "prm/sent_coarse.prm sets 5 (benchmarks/performance, session 41). It "
+      "prm/sent_coarse.prm sets 5 (benchmarks/performance/results.md). It "
       "changes the iterates, and so where a step fails and is cut back: "
       "after a crack has run, the state of a rate-dependent scene can "
       "differ by more than its tolerances (with 5, tests/ductile_notch's "

@@ -243,7 +243,7 @@ namespace DuctileContact
     Factorisation    factorisation = Factorisation::lu;
     /// Single-precision factors: as fast or faster in every shipped scene
     /// on the direct solver (sent_coarse -17 %, two_bodies -10 %; the same
-    /// Newton iterations and answers, benchmarks/performance, session 43).
+    /// Newton iterations and answers, benchmarks/performance/results.md).
     FactorPrecision precision = FactorPrecision::single_precision;
     /// Direct solver = mumps: GMRES iterations preconditioned by the last
     /// factors before the matrix is factorised again (0: every solve;
