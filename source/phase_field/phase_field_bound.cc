@@ -48,13 +48,18 @@ namespace DuctileContact
     const auto &s_n = old.block(Block::phase_field);
     const auto &R   = residual.block(Block::phase_field);
     active          = IndexSet(owned.size());
+    upper           = IndexSet(owned.size());
     for (const auto i : owned)
-      if (!constraints.is_constrained(offset + i) &&
-          R[i] + diagonal[i] * (s_n[i] - s[i]) > 0.)
-        active.add_index(i);
+      if (!constraints.is_constrained(offset + i))
+        {
+          if (R[i] + diagonal[i] * (s_n[i] - s[i]) > 0.)
+            active.add_index(i);
+          else if (R[i] + diagonal[i] * (1. - s[i]) < 0.)
+            upper.add_index(i);
+        }
     active.compress();
-    return Utilities::MPI::sum(active.n_elements(),
-                               discretisation.dof_handler.get_communicator());
+    upper.compress();
+    return active_size();
   }
 
 
@@ -77,7 +82,7 @@ namespace DuctileContact
     const auto    &s_n  = old.block(Block::phase_field);
     const auto    &b    = newton_rhs.block(Block::phase_field);
 
-    const IndexSet                 first = active;
+    const IndexSet                 first = active, first_upper = upper;
     TrilinosWrappers::SparseMatrix K_A;
     TrilinosWrappers::MPI::Vector  rhs(owned, comm), delta(owned, comm),
       r_lin(owned, comm);
@@ -99,6 +104,7 @@ namespace DuctileContact
             // E.g. MUMPS out of workspace on a large 3-D s block: keep the
             // set of update_active_set(), the coupled iteration refines it.
             active = first;
+            upper  = first_upper;
             return 0;
           }
         // R_s + K_ss delta: zero on the free rows, the bound's reaction on
@@ -106,15 +112,22 @@ namespace DuctileContact
         K_ss.vmult(r_lin, delta);
         r_lin -= b;
 
-        IndexSet next(owned.size());
+        IndexSet next(owned.size()), next_upper(owned.size());
         for (const auto i : owned)
-          if (!constraints.is_constrained(offset + i) &&
-              r_lin[i] + diagonal[i] * (s_n[i] - s[i] - delta[i]) > 0.)
-            next.add_index(i);
+          if (!constraints.is_constrained(offset + i))
+            {
+              if (r_lin[i] + diagonal[i] * (s_n[i] - s[i] - delta[i]) > 0.)
+                next.add_index(i);
+              else if (r_lin[i] + diagonal[i] * (1. - s[i] - delta[i]) < 0.)
+                next_upper.add_index(i);
+            }
         next.compress();
+        next_upper.compress();
         const bool repeated =
-          Utilities::MPI::min(next == active ? 1u : 0u, comm) == 1u;
+          Utilities::MPI::min(next == active && next_upper == upper ? 1u : 0u,
+                              comm) == 1u;
         active = next;
+        upper  = next_upper;
         if (repeated || sweep == max_sweeps)
           return sweep;
       }
@@ -125,7 +138,7 @@ namespace DuctileContact
   types::global_dof_index
   PhaseFieldBound::active_size() const
   {
-    return Utilities::MPI::sum(active.n_elements(),
+    return Utilities::MPI::sum(active.n_elements() + upper.n_elements(),
                                discretisation.dof_handler.get_communicator());
   }
 
@@ -138,10 +151,11 @@ namespace DuctileContact
     const TrilinosWrappers::MPI::BlockVector &u,
     const TrilinosWrappers::MPI::BlockVector &old) const
   {
-    for (const auto i : active)
-      for (unsigned int c = 0; c < Block::n_blocks; ++c)
-        if (c != Block::phase_field)
-          K.block(Block::phase_field, c).clear_row(i, 0.);
+    for (const IndexSet *set : {&active, &upper})
+      for (const auto i : *set)
+        for (unsigned int c = 0; c < Block::n_blocks; ++c)
+          if (c != Block::phase_field)
+            K.block(Block::phase_field, c).clear_row(i, 0.);
     hold_active_rows(K.block(Block::phase_field, Block::phase_field),
                      rhs.block(Block::phase_field),
                      u.block(Block::phase_field),
@@ -162,6 +176,11 @@ namespace DuctileContact
         K_ss.clear_row(i, diagonal[i]);
         b[i] = diagonal[i] * (s_n[i] - s[i]);
       }
+    for (const auto i : upper)
+      {
+        K_ss.clear_row(i, diagonal[i]);
+        b[i] = diagonal[i] * (1. - s[i]);
+      }
     b.compress(VectorOperation::insert);
   }
 
@@ -181,7 +200,9 @@ namespace DuctileContact
     auto       &R   = residual.block(Block::phase_field);
     for (const auto i : owned)
       if (!constraints.is_constrained(offset + i))
-        R[i] = std::min<double>(R[i], diagonal[i] * (s[i] - s_n[i]));
+        R[i] = std::max<double>(std::min<double>(R[i],
+                                                 diagonal[i] * (s[i] - s_n[i])),
+                                diagonal[i] * (s[i] - 1.));
     R.compress(VectorOperation::insert);
   }
 
@@ -192,8 +213,9 @@ namespace DuctileContact
     TrilinosWrappers::MPI::BlockVector &v) const
   {
     auto &block = v.block(Block::phase_field);
-    for (const auto i : active)
-      block[i] = 0.;
+    for (const IndexSet *set : {&active, &upper})
+      for (const auto i : *set)
+        block[i] = 0.;
     block.compress(VectorOperation::insert);
   }
 } // namespace DuctileContact

@@ -13,24 +13,28 @@
 namespace DuctileContact
 {
   /**
-   * Irreversibility of the crack as a bound on the phase-field DoFs,
-   * s_i >= s_n,i (doc/model.md section 2: "any method must keep s from
-   * decreasing"), by a primal-dual active set, i.e. semismooth Newton
-   * (Hintermueller, Ito, Kunisch 2002; for phase-field fracture as in
-   * Heister, Wheeler, Wick 2015). The KKT conditions of the bound,
+   * Irreversibility of the crack and its upper bound as a box on the
+   * phase-field DoFs, s_n,i <= s_i <= 1 (doc/model.md section 4.2), by a
+   * primal-dual active set, i.e. semismooth Newton (Hintermueller, Ito,
+   * Kunisch 2002; for phase-field fracture as in Heister, Wheeler, Wick
+   * 2015). The KKT conditions of the lower bound,
    *
    *   R_s,i = lambda_i >= 0,  s_i - s_n,i >= 0,  lambda_i (s_i - s_n,i) = 0,
    *
-   * hold exactly where the complementarity residual
+   * and of the upper one (R_s,i <= 0 where s_i = 1) hold exactly where the
+   * complementarity residual
    *
-   *   C_i = min(R_s,i, K_ii (s_i - s_n,i))
+   *   C_i = max(min(R_s,i, K_ii (s_i - s_n,i)), K_ii (s_i - 1))
    *
    * vanishes (K_ii > 0 the diagonal of the s-s tangent, a scale that makes
    * both arguments residuals). Newton on C = 0 is the active set method:
    * on A = { i : R_s,i + K_ii (s_n,i - s_i) > 0 }, the DoFs where a Newton
    * step on row i alone would end below s_n,i, the row becomes K_ii
    * delta_i = K_ii (s_n,i - s_i) (the bound reached after a full step);
-   * elsewhere it is the Newton row of R. The norms and the convergence
+   * elsewhere it is the Newton row of R; likewise on the upper set
+   * { i : R_s,i + K_ii (1 - s_i) < 0 } the row holds s_i at 1. The upper
+   * bound keeps the fourth-order field, which has no maximum principle,
+   * from overshooting 1 at its nodes (by up to 7 % without it). The norms and the convergence
    * test use C in place of R_s, so DoFs that sit on the bound with a zero
    * multiplier (e.g. s = 0 far from a crack, where round-off decides the
    * sign of R) count as converged on either side of A. CoupledProblem
@@ -137,6 +141,7 @@ namespace DuctileContact
     const dealii::types::global_dof_index offset;
     /// K_ii of the s-s block on the owned s DoFs.
     dealii::TrilinosWrappers::MPI::Vector diagonal;
-    dealii::IndexSet                      active;
+    /// DoFs held at s_n (lower) and at 1 (upper).
+    dealii::IndexSet active, upper;
   };
 } // namespace DuctileContact
