@@ -293,9 +293,8 @@ end
   for (const double v : fixed.at("contact1_max_slip"))
     largest_slip = std::max(largest_slip, v);
   out << "adaptive refinement with frictional contact:" << std::endl
-      << "  refined in the first plastic step (4 of "
-      << adapted.at("step").back()
-      << "): " << Testing::yes_no(refined_step == 4) << ", cells "
+      << "  refined in the first plastic step (step 4): "
+      << Testing::yes_no(refined_step == 4) << ", cells "
       << adapted.at("cells").front() << " -> " << adapted.at("cells").back()
       << " (the refined mesh from the start: " << fixed.at("cells").back()
       << ")" << std::endl
@@ -304,6 +303,8 @@ end
       << "  every step equals the run on the refined mesh (1e-7 of each "
          "column's scale): "
       << Testing::yes_no(worst < 1e-7) << std::endl;
+  // The number of steps depends on cut-backs, which round-off can decide.
   std::cout << "adaptive: largest difference " << worst << ", largest slip "
-            << largest_slip << std::endl;
+            << largest_slip << ", " << adapted.at("step").back() << " steps"
+            << std::endl;
 }

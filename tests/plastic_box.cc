@@ -4,12 +4,16 @@
 // (Testing::uniaxial_plastic_step) stepped with the same load steps:
 //  - the nominal stress (reaction on x = 1) and the hardening energy
 //    int_0^alpha yhat equal the driver's to 1e-6 at every step;
-//  - the energy balance W_ext - Psi^e - W_p closes as dt -> 0, at second
+//  - the energy balance W_ext - Psi^e - W_p closes as dt -> 0, at first
 //    order (W_p: the elastic energy released by the flow, see
-//    AssemblyInfo): halving dt quarters it;
+//    plastic_work_of_step()): halving dt halves it or better. Its error
+//    is made in the step in which the box starts to yield: there W_p
+//    counts the flow from the yield onset on, while the trapezoidal
+//    external work is taken across the kink of the force curve;
 //  - the plastic work equals the hardening energy up to the viscous part
-//    (eta_p is small here) and the O(elastic strain) = O(y0/mu) = 0.5 %
-//    by which the update (37) is not energy-consistent: within 1 %;
+//    (eta_p is small here): within 1 % (with the exponential map the
+//    plastic work is the work of the flow resistance, doc/model.md
+//    section 3);
 //  - a rejected step leaves no trace: steps that fail (at most 3 Newton
 //    iterations) are cut back, and the accepted ones still match the
 //    driver stepped with them alone.
@@ -172,7 +176,7 @@ main(int argc, char **argv)
         << Testing::yes_no(worst < 1e-6) << std::endl;
   }
   const double ratio = residual[0] / residual[1];
-  out << "energy residual shrinks as dt^2 (ratio 4 +- 0.4): "
-      << Testing::yes_no(std::abs(ratio - 4.) < 0.4) << std::endl;
+  out << "energy residual shrinks at first order or better (ratio > 1.8): "
+      << Testing::yes_no(ratio > 1.8) << std::endl;
   std::cout << "energy residual ratio " << ratio << std::endl;
 }

@@ -1,5 +1,7 @@
 #include <ductile_contact/app/energy_account.h>
 
+#include <limits>
+
 namespace DuctileContact
 {
   void
@@ -15,6 +17,7 @@ namespace DuctileContact
     plastic_work += committed.plastic_work_increment;
     fracture_viscous_work += committed.fracture_viscous_work_increment;
     history_driving_work += committed.history_work_increment;
+    plastic_energy_released += committed.plastic_energy_release_increment;
   }
 
 
@@ -32,6 +35,22 @@ namespace DuctileContact
       {
         statistics.add("plastic_work", plastic_work);
         statistics.add("hardening_energy", committed.hardening_energy);
+        // D_p = W_p - (Psi^p - Psi^p_0) - (the part of Psi^p the crack
+        // took): Psi^p_0 = 0 at the unloaded start.
+        statistics.add("plastic_dissipation",
+                       plastic_work - committed.hardening_energy -
+                         plastic_energy_released);
+        statistics.add("plastic_energy_released", plastic_energy_released);
+        const double min_local = committed.min_plastic_dissipation;
+        statistics.add("min_plastic_dissipation",
+                       min_local < std::numeric_limits<double>::max() ?
+                         min_local :
+                         0.);
+        statistics.add("min_alpha",
+                       committed.min_alpha <
+                           std::numeric_limits<double>::max() ?
+                         committed.min_alpha :
+                         0.);
       }
     if (cracking)
       {
@@ -40,8 +59,8 @@ namespace DuctileContact
         statistics.add("history_driving_work", history_driving_work);
       }
     statistics.add("energy_residual",
-                   external_work - committed.stored_energy - plastic_work -
-                     committed.fracture_energy - fracture_viscous_work -
-                     contact_dissipation);
+                   external_work - committed.stored_energy - plastic_work +
+                     plastic_energy_released - committed.fracture_energy -
+                     fracture_viscous_work - contact_dissipation);
   }
 } // namespace DuctileContact

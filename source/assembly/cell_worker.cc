@@ -26,6 +26,10 @@ namespace DuctileContact
     plastic_work_increment += o.plastic_work_increment;
     fracture_viscous_work_increment += o.fracture_viscous_work_increment;
     history_work_increment += o.history_work_increment;
+    plastic_energy_release_increment += o.plastic_energy_release_increment;
+    min_plastic_dissipation =
+      std::min(min_plastic_dissipation, o.min_plastic_dissipation);
+    min_alpha = std::min(min_alpha, o.min_alpha);
     for (unsigned int b = 0; b < Block::n_blocks; ++b)
       {
         magnitude_squared[b] += o.magnitude_squared[b];
@@ -79,6 +83,9 @@ namespace DuctileContact
                                     first_non_finite);
       }
     info.max_alpha = Utilities::MPI::max(max_alpha, comm);
+    info.min_alpha = Utilities::MPI::min(min_alpha, comm);
+    info.min_plastic_dissipation =
+      Utilities::MPI::min(min_plastic_dissipation, comm);
     info.min_yielding_alpha_increment =
       Utilities::MPI::min(min_yielding_alpha_increment, comm);
     info.switch_flips = Utilities::MPI::sum(switch_flips, comm);
@@ -87,7 +94,8 @@ namespace DuctileContact
                              fracture_energy,
                              plastic_work_increment,
                              fracture_viscous_work_increment,
-                             history_work_increment};
+                             history_work_increment,
+                             plastic_energy_release_increment};
     for (unsigned int b = 0; b < Block::n_blocks; ++b)
       {
         sums.push_back(magnitude_squared[b]);
@@ -100,10 +108,11 @@ namespace DuctileContact
     info.plastic_work_increment          = sums[3];
     info.fracture_viscous_work_increment = sums[4];
     info.history_work_increment          = sums[5];
+    info.plastic_energy_release_increment = sums[6];
     for (unsigned int b = 0; b < Block::n_blocks; ++b)
       {
-        info.residual_magnitude[b] = std::sqrt(sums[6 + 2 * b]);
-        info.residual_scale[b]     = std::sqrt(sums[7 + 2 * b]);
+        info.residual_magnitude[b] = std::sqrt(sums[7 + 2 * b]);
+        info.residual_scale[b]     = std::sqrt(sums[8 + 2 * b]);
       }
     // The scale of the u rows is the size of their terms.
     info.force_magnitude = info.residual_magnitude[Block::displacement];
@@ -197,10 +206,7 @@ namespace DuctileContact
 
 
 
-    /// The plastic work of the step at one point: the elastic energy the
-    /// flow C^p_n -> C^p releases, averaged over F_n and F (second order
-    /// in dt; together with the trapezoidal external work the energy
-    /// balance then closes as dt -> 0).
+    /// The plastic work of the step at one point (plastic_work_of_step()).
     double
     plastic_work(const Tensor<2, dim>       &F,
                  const Tensor<2, dim>       &grad_u_old,
@@ -209,12 +215,38 @@ namespace DuctileContact
                  const double                s,
                  const PlasticityParameters &plastic)
     {
-      const SymmetricTensor<2, dim> &C_n = history_n.Cp_inv;
-      const Tensor<2, dim>           F_n =
-        Physics::Elasticity::StandardTensors<dim>::I + grad_u_old;
-      return 0.5 * (elastic_energy(F, C_n, s, plastic) - m.psi_elastic +
-                    elastic_energy(F_n, C_n, s, plastic) -
-                    elastic_energy(F_n, m.updated.Cp_inv, s, plastic));
+      return plastic_work_of_step(
+        Physics::Elasticity::StandardTensors<dim>::I + grad_u_old,
+        F,
+        history_n,
+        m.updated.Cp_inv,
+        s,
+        plastic);
+    }
+
+    /// The change of Psi^p_loc over a step split into its parts by alpha
+    /// and by s, in the order of the backward Euler step: alpha moves at
+    /// the new s (the flow resistance of (50) is taken at s_n+1), s at the
+    /// old alpha. The parts add up to the change exactly. (The mean of the
+    /// two orderings left a residual of first order in dt in the energy
+    /// balance of tests/plastic_energy_box: 2.9 % of W_ext at 40 steps,
+    /// against 0.014 % with this one.)
+    struct PlasticEnergySplit
+    {
+      double by_alpha = 0., by_s = 0.;
+    };
+
+    PlasticEnergySplit
+    split_plastic_energy_change(const double                alpha_n,
+                                const double                alpha,
+                                const double                s_n,
+                                const double                s,
+                                const PlasticityParameters &plastic)
+    {
+      const double e00 = plastic_energy_density(alpha_n, s_n, plastic),
+                   e01 = plastic_energy_density(alpha_n, s, plastic),
+                   e11 = plastic_energy_density(alpha, s, plastic);
+      return {e11 - e01, e01 - e00};
     }
 
     /// The squared magnitudes and scales of the cell's rows by block.
@@ -293,20 +325,28 @@ namespace DuctileContact
     // plastic_update()).
     const double gradient_coefficient = plastic.initial_yield * l_p * l_p;
     const double alpha                = scratch.alpha[q];
+    const double s                    = scratch.s[q];
     sums.max_alpha                    = std::max(sums.max_alpha, alpha);
+    sums.min_alpha                    = std::min(sums.min_alpha, alpha);
     if (m.yielding)
       sums.min_yielding_alpha_increment =
         std::min(sums.min_yielding_alpha_increment,
                  alpha - history.plastic.alpha);
     sums.hardening_energy +=
-      (plastic_work_density(alpha, plastic) +
+      (plastic_energy_density(alpha, s, plastic) +
        0.5 * gradient_coefficient * scratch.grad_alpha[q].norm_square()) *
       JxW;
     if (committing)
-      sums.plastic_work_increment +=
-        plastic_work(
-          F, scratch.grad_u_old[q], m, history.plastic, scratch.s[q], plastic) *
-        JxW;
+      {
+        const double work =
+          plastic_work(F, scratch.grad_u_old[q], m, history.plastic, s, plastic);
+        sums.plastic_work_increment += work * JxW;
+        const PlasticEnergySplit split = split_plastic_energy_change(
+          history.plastic.alpha, alpha, scratch.s_old[q], s, plastic);
+        sums.plastic_energy_release_increment += -split.by_s * JxW;
+        sums.min_plastic_dissipation =
+          std::min(sums.min_plastic_dissipation, work - split.by_alpha);
+      }
     add_hardening_rows(m,
                        plastic,
                        gradient_coefficient,
@@ -348,8 +388,14 @@ namespace DuctileContact
     if (history_new)
       {
         history_new[q].driving_energy_max = driver.psi_H;
+        // Beyond -dPsi/ds / (-g_k'): psi^+, and the degraded plastic
+        // energy's phi(W_p) with the variational driver.
+        const double variational =
+          body.crack.driver == CrackDriverType::elastic_plastic_energy ?
+            psi.value :
+            m.psi_plus;
         sums.history_work_increment +=
-          -driver.g1 * (driver.psi_H - m.psi_plus) * ds * JxW;
+          -driver.g1 * (driver.psi_H - variational) * ds * JxW;
       }
     add_phase_field_rows(m,
                          driver,

@@ -24,6 +24,9 @@ namespace DuctileContact
     p.degradation_a           = crack.degradation_a;
     p.residual_stiffness      = crack.residual_stiffness;
     p.volumetric_switch_width = crack.volumetric_switch_width;
+    p.degrade_plastic_energy =
+      fracture && crack.driver == CrackDriverType::elastic_plastic_energy;
+    p.critical_work_density = crack.work_driver.critical_work_density;
     return p;
   }
 
@@ -84,6 +87,18 @@ namespace DuctileContact
                       "eta_p of (34) and (50) [Pa times pseudo time]; "
                       "positive. Small values approach rate independence.",
                       Patterns::Double(0.));
+    add_option(prm,
+               "Flow integration",
+               plastic.flow_integration,
+               flow_integration_names(),
+               "How a step's plastic flow updates (C^p)^{-1} (doc/model.md "
+               "section 3): 'exponential map' integrates d^p = lambda_p n "
+               "exactly along the trial direction, b^e = exp(-2 dt lambda_p "
+               "n) b_tr, so that the plastic work is the work of the flow "
+               "resistance and the plastic dissipation is >= 0; 'linear' is "
+               "the paper's (37), its first-order truncation, whose plastic "
+               "work falls short of int yhat dalpha by about y_0/mu "
+               "relative (a negative plastic dissipation).");
     prm.add_parameter("Length scale",
                       plastic_length_scale,
                       "l_p of the gradient term y_0 l_p^2 |grad alpha|^2/2 "
@@ -143,22 +158,32 @@ namespace DuctileContact
                "doc/model.md (27), the paper's driver; 'elastic plus plastic "
                "work' is zeta <psi^+ + W_p(alpha) - w_c> with W_p = "
                "int_0^alpha "
-               "yhat the plastic work density (Miehe et al. 2015/2016; "
-               "doc/model.md, crack drivers), for bodies with plasticity: "
-               "metals whose yield-limited stresses keep psi^+ far below "
-               "g_c/(2 l_f) tear only with it.");
+               "yhat the plastic work density (Miehe et al. 2015/2016), "
+               "not derived from the free energy: its supply of energy is "
+               "the statistics column history_driving_work; 'elastic and "
+               "plastic energy' is the variational driver psi^+ + "
+               "phi(W_p), phi(W_p) ~ <W_p - w_c>: the plastic energy above "
+               "w_c is degraded by g_k(s) together with the flow resistance, "
+               "so the crack is paid by energy the solid releases "
+               "(doc/model.md section 4.3). Both plastic drivers are for "
+               "bodies with plasticity: metals whose yield-limited stresses "
+               "keep psi^+ far below g_c/(2 l_f) tear only with them.");
     prm.add_parameter("Critical work density",
                       crack.work_driver.critical_work_density,
-                      "w_c of the elastic-plus-plastic crack driver "
-                      "[J/m^3]: below it nothing drives the crack. Not read "
-                      "with Crack driver = elastic.",
+                      "w_c of the plastic crack drivers [J/m^3]: with "
+                      "'elastic plus plastic work' nothing drives the crack "
+                      "below it; with 'elastic and plastic energy' the "
+                      "plastic energy density W_p above it is degraded and "
+                      "drives the crack. Not read with Crack driver = "
+                      "elastic.",
                       Patterns::Double(0.));
     prm.add_parameter("Driver factor",
                       crack.work_driver.factor,
                       "zeta of the elastic-plus-plastic crack driver [-]: "
                       "how strongly the work above w_c drives the crack "
-                      "(Miehe et al.'s zeta g_c/(l_f psi_c)); positive. Not "
-                      "read with Crack driver = elastic.",
+                      "(Miehe et al.'s zeta g_c/(l_f psi_c)); positive. "
+                      "Read with Crack driver = elastic plus plastic work "
+                      "only.",
                       Patterns::Double(0.));
     prm.leave_subsection();
     prm.leave_subsection();
@@ -225,8 +250,15 @@ namespace DuctileContact
                     f + "Crack driver",
                     name_of(crack_driver_names(), crack.driver),
                     "'elastic' is the only driver of a body without "
-                    "plasticity (set Plasticity = true for the plastic work "
-                    "driver)");
+                    "plasticity (set Plasticity = true for the plastic "
+                    "drivers)");
+        check_input(crack.driver != CrackDriverType::elastic_plastic_energy ||
+                      crack.work_driver.factor == 1.,
+                    f + "Driver factor",
+                    value(crack.work_driver.factor),
+                    "it must be 1 (its default) with Crack driver = elastic "
+                    "and plastic energy: that driver is -dPsi/ds of the free "
+                    "energy and has no free factor");
       }
   }
 } // namespace DuctileContact

@@ -4,19 +4,6 @@
 
 namespace DuctileContact
 {
-  double
-  plastic_work_density(const double alpha, const PlasticityParameters &p)
-  {
-    const double eta = p.saturation_exponent;
-    const double saturation =
-      eta > 0. ? alpha - (1. - std::exp(-eta * alpha)) / eta : 0.;
-    return p.initial_yield * alpha +
-           (p.saturation_yield - p.initial_yield) * saturation +
-           0.5 * p.linear_hardening * alpha * alpha;
-  }
-
-
-
   DrivingEnergy
   crack_driving_energy(const MaterialResponse     &m,
                        const double                alpha,
@@ -31,6 +18,18 @@ namespace DuctileContact
         d.d_dF     = m.dpsi_plus_dF;
         d.d_dalpha = m.dpsi_plus_dalpha;
         d.d_ds     = m.dpsi_plus_ds;
+        return d;
+      }
+    if (driver == CrackDriverType::elastic_plastic_energy)
+      {
+        // -dPsi/ds / (-g_k'(s)) of Psi^e + Psi^p_loc (plastic_energy_density()).
+        const auto [phi, slope] = degradable_plastic_energy(
+          plastic_work_density(alpha, plastic), plastic.critical_work_density);
+        d.value = m.psi_plus + phi;
+        d.d_dF  = m.dpsi_plus_dF;
+        d.d_dalpha =
+          m.dpsi_plus_dalpha + slope * hardening_stress(alpha, plastic);
+        d.d_ds = m.dpsi_plus_ds;
         return d;
       }
     const double above = m.psi_plus + plastic_work_density(alpha, plastic) -

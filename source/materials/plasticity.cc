@@ -40,6 +40,55 @@ namespace DuctileContact
              p.linear_hardening * alpha;
     }
 
+    /// W_p(alpha) = int_0^alpha yhat(a) da of (21).
+    template <typename Number>
+    Number
+    plastic_work_of(const Number &alpha, const PlasticityParameters &p)
+    {
+      const double eta        = p.saturation_exponent;
+      const Number saturation = eta > 0. ?
+                                  Number(alpha - (1. - std::exp(-eta * alpha)) / eta) :
+                                  Number(0.);
+      return p.initial_yield * alpha +
+             (p.saturation_yield - p.initial_yield) * saturation +
+             0.5 * p.linear_hardening * alpha * alpha;
+    }
+
+    /// Width w_r of the rounded bracket phi, relative to w_c.
+    constexpr double bracket_rounding = 0.1;
+
+    /// phi(W) and phi'(W) of degradable_plastic_energy().
+    template <typename Number>
+    std::pair<Number, Number>
+    degradable_part(const Number &work, const double w_c)
+    {
+      using Pair         = std::pair<Number, Number>;
+      const double width = bracket_rounding * w_c;
+      const Number x     = work - w_c;
+      if (value_of(x) <= 0.)
+        return Pair(Number(0.), Number(0.));
+      if (value_of(x) >= width)
+        return Pair(Number(x - 0.5 * width), Number(1.));
+      return Pair(Number(x * x / (2. * width)), Number(x / width));
+    }
+
+    /// The flow resistance dPsi^p_loc/dalpha: yhat(alpha), times (1 - (1 -
+    /// g_k(s)) phi'(W_p)) where the plastic energy is degraded.
+    template <typename Number>
+    Number
+    flow_resistance_of(const Number               &alpha,
+                       const Number               &s,
+                       const PlasticityParameters &p)
+    {
+      const Number y = hardening_of(alpha, p);
+      if (!p.degrade_plastic_energy)
+        return y;
+      const Number slope =
+        degradable_part(plastic_work_of(alpha, p), p.critical_work_density)
+          .second;
+      return y * (1. - (1. - degradation_of(s, p)) * slope);
+    }
+
     /**
      * Tension part q(t) of the volumetric energy, t = J - 1, and q'(t):
      * psi_vol^+ = kappa/2 q(t), psi_vol^- = kappa/2 (t^2 - q(t)), so that
@@ -81,6 +130,44 @@ namespace DuctileContact
       return (p.saturation_yield - p.initial_yield) * p.saturation_exponent *
                std::exp(-p.saturation_exponent * alpha) +
              p.linear_hardening;
+    }
+
+    /**
+     * exp(A) of a symmetric tensor by scaling and squaring of its Taylor
+     * series: A is halved until |A| <= 1/2, the series summed until a term
+     * falls below 1e-17 (at most 20 terms), the result squared back. The
+     * number of terms and squarings depends on the values only, so the
+     * derivatives of AD numbers are those of the same polynomial.
+     */
+    template <typename Number>
+    Tensor<2, dim, Number>
+    exponential(const SymmetricTensor<2, dim, Number> &A)
+    {
+      const auto value_norm = [](const Tensor<2, dim, Number> &T) {
+        double sum = 0.;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            sum += value_of(T[i][j]) * value_of(T[i][j]);
+        return std::sqrt(sum);
+      };
+      Tensor<2, dim, Number> X(A);
+      unsigned int           squarings = 0;
+      for (double norm = value_norm(X); norm > 0.5; norm *= 0.5)
+        ++squarings;
+      X *= std::ldexp(1., -static_cast<int>(squarings));
+      Tensor<2, dim, Number> result(unit_symmetric_tensor<dim, Number>());
+      Tensor<2, dim, Number> term = result;
+      for (unsigned int k = 1; k <= 20; ++k)
+        {
+          term = term * X;
+          term /= static_cast<double>(k);
+          result += term;
+          if (value_norm(term) < 1e-17)
+            break;
+        }
+      for (unsigned int i = 0; i < squarings; ++i)
+        result = result * result;
+      return result;
     }
 
     template <typename Number>
@@ -128,9 +215,11 @@ namespace DuctileContact
       // The yielding branch of r at alpha_n against the non-yielding one,
       // r_n: the point yields where the force of the rest of the field,
       // r_n, exceeds what the trial state leaves (see the header).
-      e.trial_yielding = std::sqrt(1.5) * value_of(norm_tr) -
-                           hardening_of(history_n.alpha, p) + history_n.r >
-                         0.;
+      e.trial_yielding =
+        std::sqrt(1.5) * value_of(norm_tr) -
+          flow_resistance_of(history_n.alpha, value_of(s), p) +
+          history_n.r >
+        0.;
       e.yielding = frozen_yielding ? *frozen_yielding : e.trial_yielding;
 
       // 2. Plastic flow from the current alpha of the global field, at
@@ -148,9 +237,18 @@ namespace DuctileContact
           const Number inverse_norm =
             1. / std::sqrt(norm_tr * norm_tr + eps * eps);
           n_tr                = inverse_norm * tau_dev_tr;
-          const Number factor = (2. / 3.) * dt * lambda * trace(b_tr);
-          e.Cp_inv -= factor * symmetrize(F_inv * Tensor<2, dim, Number>(n_tr) *
-                                          transpose(F_inv));
+          if (p.flow_integration == FlowIntegration::linear)
+            {
+              const Number factor = (2. / 3.) * dt * lambda * trace(b_tr);
+              e.Cp_inv -=
+                factor * symmetrize(F_inv * Tensor<2, dim, Number>(n_tr) *
+                                    transpose(F_inv));
+            }
+          else
+            // b^e = exp(-2 dt lambda n) b_tr: n and b_tr commute.
+            e.Cp_inv = symmetrize(
+              F_inv * exponential(Number(-2. * dt * lambda) * n_tr) *
+              Tensor<2, dim, Number>(b_tr) * transpose(F_inv));
           // Plastic incompressibility: det (C^p)^{-1} = 1.
           const Number rescale = std::pow(determinant(e.Cp_inv), -1. / 3.);
           e.Cp_inv             = rescale * e.Cp_inv;
@@ -180,7 +278,8 @@ namespace DuctileContact
         // second root where the flow overshoots and reverses tau_dev, a
         // spurious equilibrium that Newton found in the late neck of the
         // necking bar (force drop within one step while alpha stood still).
-        e.r += hardening_of(alpha, p) - std::sqrt(1.5) * (n_tr * tau_dev);
+        e.r += flow_resistance_of(alpha, s, p) -
+               std::sqrt(1.5) * (n_tr * tau_dev);
       else
         {
           // Hold alpha at alpha_n with the yielding branch's slope, against
@@ -205,6 +304,36 @@ namespace DuctileContact
 
 
   double
+  plastic_work_density(const double alpha, const PlasticityParameters &p)
+  {
+    return plastic_work_of(alpha, p);
+  }
+
+
+
+  std::pair<double, double>
+  degradable_plastic_energy(const double work, const double w_c)
+  {
+    return degradable_part(work, w_c);
+  }
+
+
+
+  double
+  plastic_energy_density(const double                alpha,
+                         const double                s,
+                         const PlasticityParameters &p)
+  {
+    const double work = plastic_work_of(alpha, p);
+    if (!p.degrade_plastic_energy)
+      return work;
+    return work - (1. - degradation_of(s, p)) *
+                    degradable_part(work, p.critical_work_density).first;
+  }
+
+
+
+  double
   elastic_energy(const Tensor<2, dim>          &F,
                  const SymmetricTensor<2, dim> &Cp_inv,
                  const double                   s,
@@ -216,6 +345,37 @@ namespace DuctileContact
     const double tr_b  = std::pow(J, -2. / 3.) * trace(push_forward(F, Cp_inv));
     return 0.5 * p.bulk_modulus * ((J - 1.) * (J - 1.) - (1. - g_dev) * q) +
            g_dev * 0.5 * p.shear_modulus * (tr_b - 3.);
+  }
+
+
+
+  double
+  plastic_work_of_step(const Tensor<2, dim>          &F_n,
+                       const Tensor<2, dim>          &F,
+                       const PlasticHistory          &history_n,
+                       const SymmetricTensor<2, dim> &Cp_inv,
+                       const double                   s,
+                       const PlasticityParameters    &p)
+    {
+    const SymmetricTensor<2, dim> &C_n     = history_n.Cp_inv;
+    const auto                     release = [&](const Tensor<2, dim> &G) {
+      return elastic_energy(G, C_n, s, p) - elastic_energy(G, Cp_inv, s, p);
+    };
+    // The trial yield function of evaluate() at G.
+    const double resistance =
+      flow_resistance_of(history_n.alpha, s, p) - history_n.r;
+    const auto trial = [&](const Tensor<2, dim> &G) {
+      const SymmetricTensor<2, dim> b_bar =
+        std::pow(determinant(G), -2. / 3.) * push_forward(G, C_n);
+      const SymmetricTensor<2, dim> tau_dev =
+        p.shear_modulus * degradation_of(s, p) * deviator(b_bar);
+      return std::sqrt(1.5) * tau_dev.norm() - resistance;
+    };
+    const double f_n = trial(F_n), f = trial(F);
+    double       theta = 0.;
+    if (f_n < 0. && f > 0.)
+      theta = f_n / (f_n - f);
+    return 0.5 * (release(F_n + theta * (F - F_n)) + release(F));
   }
 
 

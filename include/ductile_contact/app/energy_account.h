@@ -18,10 +18,13 @@ namespace DuctileContact
    * D_f and the history driving work (AssemblyInfo), and the energy-balance
    * residual
    *
-   *   W_ext - Psi^e - W_p - g_c int gamma - D_f - D_c
+   *   W_ext - Psi^e - W_p + R_p - g_c int gamma - D_f - D_c
+   *   = W_ext - Psi^e - Psi^p - D_p - g_c int gamma - D_f - D_c
    *
-   * with D_c the frictional dissipation (47) of the contact pairs. All in
-   * [J].
+   * with D_c the frictional dissipation (47) of the contact pairs, R_p the
+   * plastic energy the crack has released (0 unless the plastic energy is
+   * degraded, Crack driver = elastic and plastic energy) and D_p = W_p -
+   * Psi^p - R_p the plastic dissipation. All in [J].
    */
   class EnergyAccount
   {
@@ -35,7 +38,10 @@ namespace DuctileContact
 
     /// The columns stored_energy, external_work, [plastic_work,
     /// hardening_energy], [fracture_energy, fracture_viscous_work,
-    /// history_driving_work] and energy_residual at the state @p committed.
+    /// history_driving_work] and energy_residual at the state @p committed;
+    /// with plasticity also plastic_dissipation, plastic_energy_released,
+    /// the step's smallest local plastic dissipation min_plastic_dissipation
+    /// [J/m^3] and the smallest alpha at a quadrature point, min_alpha.
     void
     add_columns(Statistics         &statistics,
                 const AssemblyInfo &committed,
@@ -56,7 +62,7 @@ namespace DuctileContact
     serialize(Archive &ar, const unsigned int)
     {
       ar &external_work &plastic_work &fracture_viscous_work
-        &history_driving_work;
+        &history_driving_work &plastic_energy_released;
     }
 
   private:
@@ -65,5 +71,6 @@ namespace DuctileContact
     double                                     plastic_work          = 0.;
     double                                     fracture_viscous_work = 0.;
     double                                     history_driving_work  = 0.;
+    double plastic_energy_released = 0.;
   };
 } // namespace DuctileContact

@@ -39,7 +39,9 @@ namespace DuctileContact
     FaultSite non_finite_site;
     /// int Psi^e dV over the reference configuration [J] (degraded).
     double stored_energy = 0.;
-    /// int (int_0^alpha yhat da + y_0 l_p^2/2 |grad alpha|^2) dV [J], (20).
+    /// int (Psi^p_loc(alpha, s) + y_0 l_p^2/2 |grad alpha|^2) dV [J], (20)
+    /// with Psi^p_loc of plastic_energy_density() (int_0^alpha yhat da
+    /// unless the plastic energy is degraded).
     double hardening_energy = 0.;
     /// g_c int gamma dV with the C0IP-consistent bi-Laplacian [J]:
     /// a(s, s)/2 of phase_field/c0ip.h.
@@ -65,6 +67,18 @@ namespace DuctileContact
     /// about minus this (to first order in dt); see the statistics column
     /// history_driving_work.
     double history_work_increment = 0.;
+    /// Of the committed step [J]: the plastic energy the crack releases,
+    /// int -(Psi^p_loc(s) - Psi^p_loc(s_n)) dV at the mean of the orderings
+    /// of the alpha and s increments (0 unless the plastic energy is
+    /// degraded; >= 0 while the crack grows).
+    double plastic_energy_release_increment = 0.;
+    /// Of the committed step [J/m^3]: the smallest local plastic
+    /// dissipation over the quadrature points, the plastic work of the step
+    /// minus the change of Psi^p_loc at fixed s (without the gradient term,
+    /// which couples the points); +max if no point has alpha.
+    double min_plastic_dissipation = std::numeric_limits<double>::max();
+    /// Smallest alpha at a quadrature point (+max if none).
+    double min_alpha = std::numeric_limits<double>::max();
     /// Largest alpha at a quadrature point, and the smallest alpha -
     /// alpha_n over the yielding ones (chi_p = 1; +inf if none yields): a
     /// negative value is plastic flow reversed by the gradient term.
@@ -103,6 +117,9 @@ namespace DuctileContact
     double plastic_work_increment          = 0.;
     double fracture_viscous_work_increment = 0.;
     double history_work_increment          = 0.;
+    double plastic_energy_release_increment = 0.;
+    double min_plastic_dissipation = std::numeric_limits<double>::max();
+    double min_alpha               = std::numeric_limits<double>::max();
     /// Sums of squares of the cell magnitudes and scales per block (the
     /// scale of u is its magnitude).
     std::array<double, Block::n_blocks> magnitude_squared{{0., 0., 0.}};

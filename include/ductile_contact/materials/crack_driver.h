@@ -14,8 +14,12 @@ namespace DuctileContact
   {
     /// psi^+ of doc/model.md (27), the paper's driver.
     elastic,
-    /// zeta <psi^+ + W_p(alpha) - w_c>, plastic work drives the crack too.
-    elastic_plastic
+    /// zeta <psi^+ + W_p(alpha) - w_c>, plastic work drives the crack too
+    /// (not derived from the free energy).
+    elastic_plastic,
+    /// psi^+ + phi(W_p(alpha)): -dPsi/ds of the elastic energy and of the
+    /// degraded plastic energy (plastic_energy_density()), variational.
+    elastic_plastic_energy
   };
 
   inline const NameTable<CrackDriverType> &
@@ -23,7 +27,9 @@ namespace DuctileContact
   {
     static const NameTable<CrackDriverType> t{
       {CrackDriverType::elastic, "elastic"},
-      {CrackDriverType::elastic_plastic, "elastic plus plastic work"}};
+      {CrackDriverType::elastic_plastic, "elastic plus plastic work"},
+      {CrackDriverType::elastic_plastic_energy,
+       "elastic and plastic energy"}};
     return t;
   }
 
@@ -35,14 +41,6 @@ namespace DuctileContact
     dealii::Tensor<2, dim> d_dF;
     double                 d_dalpha = 0., d_ds = 0.;
   };
-
-  /// Plastic work density W_p(alpha) = int_0^alpha yhat(a) da [J/m^3] of
-  /// the saturation law (21): the local part of Psi^p in (20), and the
-  /// work the flow dissipates per unit volume in the rate-independent
-  /// limit (tau : d^p = sqrt(2/3) |tau_dev| lambda_p = yhat alpha-dot on
-  /// the yield surface).
-  double
-  plastic_work_density(const double alpha, const PlasticityParameters &p);
 
   /// The parameters of the plastic work driver.
   struct PlasticWorkDriver
@@ -71,6 +69,16 @@ namespace DuctileContact
    *    the crack; a metal that has dissipated zeta W_p ~ g_c/(2 l_f) per
    *    unit volume tears, whatever its elastic energy (which yield-limited
    *    stresses keep small).
+   *
+   *  - elastic and plastic energy (variational; doc/model.md section 4.3,
+   *    after Borden, Hughes, Landis, Anvari & Lee 2016, CMAME 312, and
+   *    Miehe, Aldakheel & Raina 2016): the plastic energy above w_c is
+   *    degraded with the phase field, Psi^p_loc = W_p - (1 - g_k(s))
+   *    phi(W_p) (plastic_energy_density()), and
+   *      psi_D = psi^+ + phi(W_p(alpha)),
+   *    so that H = -g_k'(s) psi_D = -dPsi/ds: the crack is paid by the
+   *    elastic and plastic energy the solid gives up, and the flow
+   *    resistance falls with it (plastic_update()). zeta is not used.
    *
    * The derivatives are exact (those of psi^+ come from the material law's
    * automatic differentiation; dW_p/dalpha = yhat(alpha)); where the

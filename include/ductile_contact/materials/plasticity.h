@@ -3,14 +3,39 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <ductile_contact/core/option.h>
 #include <ductile_contact/core/types.h>
 #include <ductile_contact/materials/material_defaults.h>
 #include <ductile_contact/materials/material_response.h>
 
 #include <optional>
+#include <utility>
 
 namespace DuctileContact
 {
+  /// Plasticity/Flow integration: how the flow of a step updates
+  /// (C^p)^{-1} (doc/model.md section 3, step 2).
+  enum class FlowIntegration
+  {
+    /// b^e = exp(-2 dt lambda_p n_tr) b_tr: the flow d^p = lambda_p n
+    /// integrated exactly along the trial direction (the exponential map);
+    /// the plastic work of the step is then sqrt(3/2) n : tau_dev dalpha.
+    exponential,
+    /// (37) of the paper, its first-order truncation: b^e = b_tr - 2/3 dt
+    /// lambda_p tr[b_tr] n_tr; its flow differs from lambda_p n by the
+    /// elastic strain, and so does its plastic work from int yhat dalpha.
+    linear
+  };
+
+  inline const NameTable<FlowIntegration> &
+  flow_integration_names()
+  {
+    static const NameTable<FlowIntegration> t{
+      {FlowIntegration::exponential, "exponential map"},
+      {FlowIntegration::linear, "linear"}};
+    return t;
+  }
+
   /**
    * Material parameters of the finite-strain visco-plastic J2 model with
    * saturation hardening and crack degradation (doc/model.md sections 2-3).
@@ -31,11 +56,49 @@ namespace DuctileContact
     double residual_stiffness = MaterialDefaults::residual_stiffness;
     /// delta of the smoothed switch of (17); 0: sharp (see plastic_update)
     double volumetric_switch_width = MaterialDefaults::volumetric_switch_width;
+    /// How the flow updates (C^p)^{-1}.
+    FlowIntegration flow_integration = FlowIntegration::exponential;
+    /// Whether the plastic energy is degraded by the phase field
+    /// (plastic_energy_density(); the crack driver 'elastic and plastic
+    /// energy').
+    bool degrade_plastic_energy = false;
+    /// w_c [J/m^3]: the part of W_p(alpha) above it is degraded.
+    double critical_work_density = 0.;
   };
 
   /// Saturation hardening yhat(alpha), doc/model.md (21).
   double
   hardening_stress(const double alpha, const PlasticityParameters &p);
+
+  /// Plastic work density W_p(alpha) = int_0^alpha yhat(a) da [J/m^3] of
+  /// the saturation law (21): the local part of Psi^p in (20), and the
+  /// work the flow does per unit volume in the rate-independent limit
+  /// (tau : d^p = sqrt(2/3) |tau_dev| lambda_p = yhat alpha-dot on the yield
+  /// surface).
+  double
+  plastic_work_density(const double alpha, const PlasticityParameters &p);
+
+  /// The degradable part phi(W_p) of the plastic energy [J/m^3] and its
+  /// slope phi'(W_p): W_p above the critical work density w_c, with the
+  /// bracket rounded over a width w_r = w_c/10 so that its slope is
+  /// continuous (phi = (W_p - w_c)^2/(2 w_r) below w_c + w_r, W_p - w_c -
+  /// w_r/2 beyond; the sharp bracket <W_p> for w_c = 0).
+  std::pair<double, double>
+  degradable_plastic_energy(const double work, const double w_c);
+
+  /**
+   * Local part of the plastic stored energy [J/m^3] (doc/model.md (20) and
+   * section 4.3): Psi^p_loc(alpha, s) = W_p(alpha), or, where the plastic
+   * energy is degraded,
+   *   Psi^p_loc = W_p(alpha) - (1 - g_k(s)) phi(W_p(alpha)),
+   * so that the flow resistance dPsi^p_loc/dalpha = yhat (1 - (1 - g_k)
+   * phi') falls with the phase field and -dPsi^p_loc/ds = -g_k'(s)
+   * phi(W_p) is the plastic energy the crack releases.
+   */
+  double
+  plastic_energy_density(const double                alpha,
+                         const double                s,
+                         const PlasticityParameters &p);
 
 
 
@@ -48,6 +111,30 @@ namespace DuctileContact
                  const dealii::SymmetricTensor<2, dim> &Cp_inv,
                  const double                           s,
                  const PlasticityParameters            &p);
+
+  /**
+   * The plastic work of a step at a material point [J/m^3]: the elastic
+   * energy the flow (C^p_n)^{-1} -> @p Cp_inv releases at fixed
+   * deformation,
+   *   w(G) = Psi^e(G, (C^p_n)^{-1}, s) - Psi^e(G, (C^p)^{-1}, s),
+   * averaged over the deformations at which the flow starts and ends: F_n
+   * and F (the trapezoidal rule; with the trapezoidal external work the
+   * energy balance closes at second order in dt along a plastic path), or,
+   * in the step in which the point starts to yield, F_theta = F_n +
+   * theta (F - F_n) and F, where theta is the zero of the trial yield
+   * function sqrt(3/2) |tau_dev,tr| - dPsi^p_loc/dalpha(alpha_n, s) + r_n
+   * interpolated linearly between F_n and F. The trapezoidal rule over
+   * the whole step gives a point that yields only in the last part of its
+   * first plastic step half of the work it does there, and a local
+   * plastic dissipation w - Delta Psi^p below zero.
+   */
+  double
+  plastic_work_of_step(const dealii::Tensor<2, dim>          &F_n,
+                       const dealii::Tensor<2, dim>          &F,
+                       const PlasticHistory                  &history_n,
+                       const dealii::SymmetricTensor<2, dim> &Cp_inv,
+                       const double                           s,
+                       const PlasticityParameters            &p);
 
   /**
    * Material point update of doc/model.md section 3, steps 1-3, a pure
