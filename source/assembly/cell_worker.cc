@@ -212,6 +212,7 @@ namespace DuctileContact
                  const Tensor<2, dim>       &grad_u_old,
                  const MaterialResponse     &m,
                  const PlasticHistory       &history_n,
+                 const double                s_n,
                  const double                s,
                  const PlasticityParameters &plastic)
     {
@@ -220,6 +221,7 @@ namespace DuctileContact
         F,
         history_n,
         m.updated.Cp_inv,
+        s_n,
         s,
         plastic);
     }
@@ -339,7 +341,13 @@ namespace DuctileContact
     if (committing)
       {
         const double work =
-          plastic_work(F, scratch.grad_u_old[q], m, history.plastic, s, plastic);
+          plastic_work(F,
+                       scratch.grad_u_old[q],
+                       m,
+                       history.plastic,
+                       scratch.s_old[q],
+                       s,
+                       plastic);
         sums.plastic_work_increment += work * JxW;
         const PlasticEnergySplit split = split_plastic_energy_change(
           history.plastic.alpha, alpha, scratch.s_old[q], s, plastic);

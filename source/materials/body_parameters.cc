@@ -106,6 +106,15 @@ namespace DuctileContact
                       Patterns::Double(0.));
     prm.leave_subsection();
 
+    declare_fracture(prm);
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  BodyParameters::declare_fracture(ParameterHandler &prm)
+  {
     prm.enter_subsection("Fracture");
     prm.add_parameter("Critical energy release rate",
                       crack.critical_energy_release_rate,
@@ -183,9 +192,9 @@ namespace DuctileContact
                       "how strongly the work above w_c drives the crack "
                       "(Miehe et al.'s zeta g_c/(l_f psi_c)); positive. "
                       "Read with Crack driver = elastic plus plastic work "
-                      "only.",
+                      "only; it must stay 1 with elastic and plastic "
+                      "energy.",
                       Patterns::Double(0.));
-    prm.leave_subsection();
     prm.leave_subsection();
   }
 
@@ -252,6 +261,15 @@ namespace DuctileContact
                     "'elastic' is the only driver of a body without "
                     "plasticity (set Plasticity = true for the plastic "
                     "drivers)");
+        check_input(crack.driver != CrackDriverType::elastic_plastic_energy ||
+                      crack.work_driver.critical_work_density > 0.,
+                    f + "Critical work density",
+                    value(crack.work_driver.critical_work_density),
+                    "it must be positive with Crack driver = elastic and "
+                    "plastic energy (the degraded part of W_p is rounded over "
+                    "w_c/10 above w_c, so that the flow resistance is "
+                    "continuous; with w_c = 0 it would drop by (1 - g) y_0 at "
+                    "the first yield)");
         check_input(crack.driver != CrackDriverType::elastic_plastic_energy ||
                       crack.work_driver.factor == 1.,
                     f + "Driver factor",

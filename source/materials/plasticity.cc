@@ -152,7 +152,10 @@ namespace DuctileContact
       };
       Tensor<2, dim, Number> X(A);
       unsigned int           squarings = 0;
-      for (double norm = value_norm(X); norm > 0.5; norm *= 0.5)
+      // (A non-finite A keeps its norm: at most 64 halvings, the NaN or
+      // Inf then reaches the residual, which reports it.)
+      for (double norm = value_norm(X); norm > 0.5 && squarings < 64;
+           norm *= 0.5)
         ++squarings;
       X *= std::ldexp(1., -static_cast<int>(squarings));
       Tensor<2, dim, Number> result(unit_symmetric_tensor<dim, Number>());
@@ -354,24 +357,27 @@ namespace DuctileContact
                        const Tensor<2, dim>          &F,
                        const PlasticHistory          &history_n,
                        const SymmetricTensor<2, dim> &Cp_inv,
+                       const double                   s_n,
                        const double                   s,
                        const PlasticityParameters    &p)
-    {
+  {
     const SymmetricTensor<2, dim> &C_n     = history_n.Cp_inv;
     const auto                     release = [&](const Tensor<2, dim> &G) {
       return elastic_energy(G, C_n, s, p) - elastic_energy(G, Cp_inv, s, p);
     };
-    // The trial yield function of evaluate() at G.
-    const double resistance =
-      flow_resistance_of(history_n.alpha, s, p) - history_n.r;
-    const auto trial = [&](const Tensor<2, dim> &G) {
+    // The trial yield function of evaluate() at G with the phase field
+    // @p phase.
+    const auto trial = [&](const Tensor<2, dim> &G, const double phase) {
       const SymmetricTensor<2, dim> b_bar =
         std::pow(determinant(G), -2. / 3.) * push_forward(G, C_n);
       const SymmetricTensor<2, dim> tau_dev =
-        p.shear_modulus * degradation_of(s, p) * deviator(b_bar);
-      return std::sqrt(1.5) * tau_dev.norm() - resistance;
+        p.shear_modulus * degradation_of(phase, p) * deviator(b_bar);
+      return std::sqrt(1.5) * tau_dev.norm() -
+             flow_resistance_of(history_n.alpha, phase, p) + history_n.r;
     };
-    const double f_n = trial(F_n), f = trial(F);
+    // At the start of the step with its phase field, at its end with the
+    // new one.
+    const double f_n = trial(F_n, s_n), f = trial(F, s);
     double       theta = 0.;
     if (f_n < 0. && f > 0.)
       theta = f_n / (f_n - f);

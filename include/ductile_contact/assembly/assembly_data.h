@@ -68,9 +68,10 @@ namespace DuctileContact
     /// history_driving_work.
     double history_work_increment = 0.;
     /// Of the committed step [J]: the plastic energy the crack releases,
-    /// int -(Psi^p_loc(s) - Psi^p_loc(s_n)) dV at the mean of the orderings
-    /// of the alpha and s increments (0 unless the plastic energy is
-    /// degraded; >= 0 while the crack grows).
+    /// int -(Psi^p_loc(alpha_n, s) - Psi^p_loc(alpha_n, s_n)) dV (the s
+    /// part of the step's change in backward Euler order: s at the old
+    /// alpha; 0 unless the plastic energy is degraded; >= 0 while the crack
+    /// grows).
     double plastic_energy_release_increment = 0.;
     /// Of the committed step [J/m^3]: the smallest local plastic
     /// dissipation over the quadrature points, the plastic work of the step

@@ -73,6 +73,10 @@ namespace DuctileContact
     void
     declare(dealii::ParameterHandler &prm);
 
+    /// The subsection Fracture of declare().
+    void
+    declare_fracture(dealii::ParameterHandler &prm);
+
     /// Throws InputError for invalid values.
     void
     check() const;

@@ -122,8 +122,9 @@ namespace DuctileContact
    * energy balance closes at second order in dt along a plastic path), or,
    * in the step in which the point starts to yield, F_theta = F_n +
    * theta (F - F_n) and F, where theta is the zero of the trial yield
-   * function sqrt(3/2) |tau_dev,tr| - dPsi^p_loc/dalpha(alpha_n, s) + r_n
-   * interpolated linearly between F_n and F. The trapezoidal rule over
+   * function sqrt(3/2) |tau_dev,tr| - dPsi^p_loc/dalpha(alpha_n, .) + r_n
+   * (at F_n with the phase field @p s_n of the step's start, at F with the
+   * new @p s) interpolated linearly between F_n and F. The trapezoidal rule over
    * the whole step gives a point that yields only in the last part of its
    * first plastic step half of the work it does there, and a local
    * plastic dissipation w - Delta Psi^p below zero.
@@ -133,6 +134,7 @@ namespace DuctileContact
                        const dealii::Tensor<2, dim>          &F,
                        const PlasticHistory                  &history_n,
                        const dealii::SymmetricTensor<2, dim> &Cp_inv,
+                       const double                           s_n,
                        const double                           s,
                        const PlasticityParameters            &p);
 
@@ -140,7 +142,9 @@ namespace DuctileContact
    * Material point update of doc/model.md section 3, steps 1-3, a pure
    * function: trial state b_tr = F (C^p_n)^{-1} F^T and yield switch chi_p
    * from the degraded trial stress; lambda_p = sqrt(3/2) (alpha -
-   * alpha_n)/dt and
+   * alpha_n)/dt and, by the exponential map (FlowIntegration),
+   *   (C^p)^{-1} = F^{-1} exp(-2 dt lambda_p n_tr) b_tr F^{-T},
+   * or by the paper's (37),
    *   (C^p)^{-1} = (C^p_n)^{-1} - 2/3 dt lambda_p tr[b_tr] F^{-1} n_tr F^{-T},
    * rescaled to determinant 1 (plastic incompressibility to round-off);
    * finally tau = J dPsi^e/dJ I + mu g_dev(s) dev[bbar^e] with Psi^e of
@@ -153,8 +157,10 @@ namespace DuctileContact
    * convex in J at every damage, and beyond |J - 1| >= delta the stress is
    * the sharp one (the energy differs by the constant kappa/14 delta^2
    * (1 - g) in tension); psi^+ = kappa/2 q(J - 1) + mu/2 (tr bbar^e - 3).
-   * r is the local part of (50): eta_p (alpha - alpha_n)/dt + yhat(alpha) -
-   * sqrt(3/2) n_tr : tau_dev where chi_p = 1, with n_tr = dev tau_tr /
+   * r is the local part of (50): eta_p (alpha - alpha_n)/dt + y(alpha, s) -
+   * sqrt(3/2) n_tr : tau_dev where chi_p = 1, y = dPsi^p_loc/dalpha the
+   * flow resistance (yhat(alpha) unless the plastic energy is degraded,
+   * plastic_energy_density()), with n_tr = dev tau_tr /
    * |dev tau_tr|. The flow keeps tau_dev parallel to n_tr, so n_tr : tau_dev
    * is |tau_dev| as long as the flow does not overshoot; unlike |tau_dev| it
    * falls monotonically with alpha, so r has one root (with |tau_dev|
@@ -179,8 +185,8 @@ namespace DuctileContact
    *    from n_tr by under 1 %;
    *  - where chi_p = 0 the local part is eta_p (alpha - alpha_n)/dt + c
    *    (alpha - alpha_n) + r_n with c = mu g_dev tr[bbar_tr] +
-   *    yhat'(alpha_n), the slope the yielding branch has there (~3 mu +
-   *    h), and r_n the local part at the last accepted state
+   *    yhat'(alpha_n), about the slope the yielding branch has there (~3 mu
+   *    + h; the undegraded hardening slope), and r_n the local part at the last accepted state
    *    (PlasticHistory::r): the continuum equation (alpha = alpha_n, no
    *    flow) is the same, but alpha is held at alpha_n as firmly as the
    *    yielding points hold theirs, and the force r_n with which the rest
