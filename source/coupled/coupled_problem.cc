@@ -182,7 +182,7 @@ namespace DuctileContact
   void
   CoupledProblem::begin_solve()
   {
-    // Irreversibility as a bound s >= s_n on the phase-field DoFs, not in a
+    // Irreversibility as a bound s_n <= s <= 1 on the phase-field DoFs, not in a
     // sub-solve that freezes s.
     bound.reset();
     if (coupling.phase_field_bound() && has_phase_field() &&
@@ -392,7 +392,8 @@ namespace DuctileContact
           {
             bound_engaged = true;
             verbose_out << "        s falls below its last accepted "
-                           "value: the bound s >= s_n is engaged"
+                           "value or rises above 1: the bound s_n <= s <= 1 "
+                           "is engaged"
                         << std::endl;
             return false;
           }

@@ -12,6 +12,18 @@ namespace DuctileContact
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// The lower bound of the box at a DoF whose accepted value is @p s_n:
+    /// s_n, but at most the upper bound 1 (an accepted s_n above 1, from a
+    /// run without the bound, must not empty the box).
+    double
+    lower(const double s_n)
+    {
+      return std::min(s_n, 1.);
+    }
+  } // namespace
+
   PhaseFieldBound::PhaseFieldBound(const Discretisation &discretisation)
       : discretisation(discretisation)
       , offset(discretisation.dofs_per_block[Block::displacement] +
@@ -52,7 +64,7 @@ namespace DuctileContact
     for (const auto i : owned)
       if (!constraints.is_constrained(offset + i))
         {
-          if (R[i] + diagonal[i] * (s_n[i] - s[i]) > 0.)
+          if (R[i] + diagonal[i] * (lower(s_n[i]) - s[i]) > 0.)
             active.add_index(i);
           else if (R[i] + diagonal[i] * (1. - s[i]) < 0.)
             upper.add_index(i);
@@ -116,7 +128,7 @@ namespace DuctileContact
         for (const auto i : owned)
           if (!constraints.is_constrained(offset + i))
             {
-              if (r_lin[i] + diagonal[i] * (s_n[i] - s[i] - delta[i]) > 0.)
+              if (r_lin[i] + diagonal[i] * (lower(s_n[i]) - s[i] - delta[i]) > 0.)
                 next.add_index(i);
               else if (r_lin[i] + diagonal[i] * (1. - s[i] - delta[i]) < 0.)
                 next_upper.add_index(i);
@@ -174,7 +186,7 @@ namespace DuctileContact
     for (const auto i : active)
       {
         K_ss.clear_row(i, diagonal[i]);
-        b[i] = diagonal[i] * (s_n[i] - s[i]);
+        b[i] = diagonal[i] * (lower(s_n[i]) - s[i]);
       }
     for (const auto i : upper)
       {
@@ -201,7 +213,7 @@ namespace DuctileContact
     for (const auto i : owned)
       if (!constraints.is_constrained(offset + i))
         R[i] = std::max<double>(std::min<double>(R[i],
-                                                 diagonal[i] * (s[i] - s_n[i])),
+                                                 diagonal[i] * (s[i] - lower(s_n[i]))),
                                 diagonal[i] * (s[i] - 1.));
     R.compress(VectorOperation::insert);
   }

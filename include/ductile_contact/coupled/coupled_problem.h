@@ -30,7 +30,7 @@ namespace DuctileContact
    * (sparsity pattern with the C0IP and contact couplings, tangent,
    * right-hand side, residual, internal force) and combines the bulk cells
    * and C0IP faces (SystemAssembler), the contact pairs (ContactProblem,
-   * if any) and the irreversibility bound s >= s_n (PhaseFieldBound, if
+   * if any) and the irreversibility bound s_n <= s <= 1 (PhaseFieldBound, if
    * Coupling/Irreversibility asks for it).
    *
    * Prescribed displacements enter through the Newton constraints

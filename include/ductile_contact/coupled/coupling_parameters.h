@@ -78,7 +78,7 @@ namespace DuctileContact
     {
       return irreversibility != Irreversibility::bound;
     }
-    /// Whether s >= s_n is enforced at the phase-field DoFs.
+    /// Whether s_n <= s <= 1 is enforced at the phase-field DoFs.
     bool
     phase_field_bound() const
     {
