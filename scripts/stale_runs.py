@@ -1,0 +1,122 @@
+#!/usr/bin/env python3
+"""Lists the committed runs that are older than the physics they ran.
+
+A run is a folder under benchmarks/ with a 'statistics' file. Its commit is
+the one recorded in its log.txt ('revision <hash>' in the program's header)
+or, for runs written before the program recorded it, the last commit that
+changed the statistics file. The physics is every file under
+source/materials, source/phase_field, source/contact and source/assembly
+(and their headers under include/ductile_contact/); a run is stale when a
+commit that changed the physics is newer than the run's commit.
+
+A run that stays on purpose (a historical comparison) is listed in a file
+'historical' in its folder or in one of its parents: one line of reason.
+Those are listed apart.
+
+Usage: scripts/stale_runs.py [--markdown] [--fail]
+  --markdown  a table for benchmarks/README.md
+  --fail      exit 1 if a run is stale and not marked historical
+"""
+import argparse
+import pathlib
+import re
+import subprocess
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+PHYSICS = [
+    "source/materials", "source/phase_field", "source/contact", "source/assembly",
+    "include/ductile_contact/materials", "include/ductile_contact/phase_field",
+    "include/ductile_contact/contact", "include/ductile_contact/assembly",
+]
+
+
+def git(*args):
+    return subprocess.run(["git", *args], cwd=ROOT, check=True, capture_output=True,
+                          text=True).stdout.strip()
+
+
+def physics_commits():
+    """Commits that changed the physics, newest first: (hash, unix time)."""
+    out = git("log", "--format=%H %ct", "--", *PHYSICS)
+    return [(h, int(t)) for h, t in (line.split() for line in out.splitlines())]
+
+
+def run_commit(folder):
+    """The run's commit and how it is known."""
+    log = folder / "log.txt"
+    if log.exists():
+        with open(log, errors="replace") as f:
+            head = f.read(4000)
+        m = re.search(r"revision ([0-9a-f]{7,40})", head)
+        if m:
+            return m.group(1), "log.txt"
+    rel = (folder / "statistics").relative_to(ROOT)
+    h = git("log", "-1", "--format=%H", "--", str(rel))
+    return (h, "git") if h else (None, "uncommitted")
+
+
+def commit_time(h):
+    try:
+        return int(git("show", "-s", "--format=%ct", h))
+    except subprocess.CalledProcessError:
+        return None
+
+
+def historical_reason(folder):
+    for d in [folder, *folder.parents]:
+        if d == ROOT:
+            break
+        f = d / "historical"
+        if f.exists():
+            return f.read_text().strip().splitlines()[0]
+    return None
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--markdown", action="store_true")
+    parser.add_argument("--fail", action="store_true")
+    args = parser.parse_args()
+
+    changes = physics_commits()
+    latest_hash, latest_time = changes[0]
+    stale, historical = [], []
+    for stats in sorted((ROOT / "benchmarks").rglob("statistics")):
+        folder = stats.parent
+        h, source = run_commit(folder)
+        t = commit_time(h) if h else None
+        if t is not None and t >= latest_time:
+            continue
+        newer = sum(1 for _, ct in changes if t is None or ct > t)
+        row = (str(folder.relative_to(ROOT)), (h or "-")[:10], source, newer)
+        reason = historical_reason(folder)
+        (historical if reason else stale).append(row + (reason or "",))
+
+    if args.markdown:
+        # One row per study (benchmarks/<area>/<study>), with its runs counted.
+        groups = {}
+        for r in stale + historical:
+            key = ("/".join(r[0].split("/")[:3]), r[4])
+            g = groups.setdefault(key, [0, set()])
+            g[0] += 1
+            g[1].add(r[1])
+        print(f"Runs older than the last change to the physics ({latest_hash[:10]}), "
+              f"from `scripts/stale_runs.py --markdown`:\n")
+        print("| study | runs | their commits | historical because |")
+        print("|---|---|---|---|")
+        for (study, reason), (n, commits) in sorted(groups.items()):
+            shown = ", ".join(sorted(commits)[:3]) + (" …" if len(commits) > 3 else "")
+            print(f"| {study} | {n} | {shown} | {reason or 'stale: to be rerun'} |")
+    else:
+        print(f"last physics change: {latest_hash[:10]}")
+        for r in stale:
+            print(f"stale: {r[0]} ({r[1]}, {r[2]}; {r[3]} physics commits since)")
+        for r in historical:
+            print(f"historical: {r[0]} ({r[1]}): {r[4]}")
+        print(f"{len(stale)} stale, {len(historical)} historical")
+    return 1 if args.fail and stale else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
