@@ -52,15 +52,6 @@ for sweep in "$@"; do
   lists+=("$(sed 's/^[^=]*= *//' <<< "$sweep")")
 done
 
-# .prm lines that set ENTRY (subsections joined by '/') to VALUE.
-prm_lines() {
-  local path=$1 value=$2 IFS=/
-  read -ra parts <<< "$path"
-  local n=${#parts[@]}
-  for ((i = 0; i < n - 1; ++i)); do echo "subsection ${parts[$i]}"; done
-  echo "  set ${parts[$((n - 1))]} = $value"
-  for ((i = 0; i < n - 1; ++i)); do echo "end"; done
-}
 
 # Every combination, one per line: values separated by tabs.
 combinations=("")
@@ -90,23 +81,22 @@ run_one() {
   fi
   rm -rf "$dir"
   mkdir -p "$dir"
-  {
-    cat "$scene"
-    echo
-    for f in "${fixed[@]}"; do
-      prm_lines "$(sed 's/ *=.*//' <<< "$f")" "$(sed 's/^[^=]*= *//' <<< "$f")"
-    done
-    IFS=$'\t' read -ra values <<< "$combination"
-    for ((s = 0; s < ${#names[@]}; ++s)); do
-      prm_lines "${names[$s]}" "${values[$s]}"
-    done
-    prm_lines "Output/Directory" "$dir"
-  } > "$dir/scene.prm"
+  # The scene as it is, the study's entries as --set overrides (recorded by
+  # the program in the run's input.prm and parameters.prm).
+  local sets=()
+  for f in "${fixed[@]}"; do sets+=(--set "$f"); done
+  IFS=$'\t' read -ra values <<< "$combination"
+  for ((s = 0; s < ${#names[@]}; ++s)); do
+    sets+=(--set "${names[$s]} = ${values[$s]}")
+  done
+  sets+=(--set "Output/Directory = $dir")
+  cp "$scene" "$dir/scene.prm"
+  printf '%s\n' "${sets[@]}" | grep -v '^--set$' > "$dir/overrides"
   echo "== run $k on $np rank(s): ${combination//	/, } ($(date +%H:%M))"
   local start=$(date +%s%N)
   # From the project root, like scripts/run.sh: mesh paths in the shipped
   # scenes are relative to it.
-  (cd "$project_root" && mpirun -np "$np" "$exe" "$dir/scene.prm" > "$dir/screen.txt" 2>&1)
+  (cd "$project_root" && mpirun -np "$np" "$exe" "${sets[@]}" "$dir/scene.prm" > "$dir/screen.txt" 2>&1)
   local code=$?
   echo "$code" > "$dir/exit_code"
   echo "$((($(date +%s%N) - start) / 1000000))" > "$dir/wall_time_ms"

@@ -6,18 +6,22 @@
 #include <ductile_contact/app/checkpoint.h>
 #include <ductile_contact/app/simulation.h>
 #include <ductile_contact/app/stop_request.h>
+#include <ductile_contact/app/version.h>
 #include <ductile_contact/core/input_error.h>
 #include <ductile_contact/core/one_line.h>
 #include <ductile_contact/mesh/scene.h>
 #include <ductile_contact/output/probe_points.h>
 #include <ductile_contact/output/tee_stream.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <optional>
@@ -32,8 +36,15 @@ namespace DuctileContact
   {
     const char *usage =
       "Usage: ductile-contact [--validate] [--print-parameters[=FORMAT]] "
-      "[--resume] FILE.prm\n"
-      "       mpirun -np N ductile-contact [--resume] FILE.prm\n"
+      "[--resume] [--set \"Subsection/Entry = value\"]... FILE.prm\n"
+      "       mpirun -np N ductile-contact [--resume] [--set ...] FILE.prm\n"
+      "       ductile-contact --version\n"
+      "  --set               override one entry of FILE.prm, e.g. --set "
+      "\"Body 0/Fracture/Critical energy release rate = 75e3\" (repeatable; "
+      "applied after the file, in order; recorded in input.prm and "
+      "parameters.prm of the results)\n"
+      "  --version           print the version, git revision, deal.II "
+      "version and build type, and exit\n"
       "  --resume            continue from the newest complete checkpoint in "
       "the output directory of FILE.prm (Checkpoint/Interval), on any "
       "number of ranks; FILE.prm may change the end time, output, solver "
@@ -356,6 +367,8 @@ namespace DuctileContact
       bool                          validate = false, print_parameters = false;
       bool                          resume = false;
       std::string                   file_name;
+      /// The --set overrides, "Subsection/Entry = value", in order.
+      std::vector<std::string> overrides;
       ParameterHandler::OutputStyle style = ParameterHandler::PRM;
       /// Set when the command line is answered without reading an input
       /// file (help, a bad option): the exit code.
@@ -410,6 +423,21 @@ namespace DuctileContact
                             "json)");
               line.style = *style;
             }
+          else if (arg == "--set" || arg.rfind("--set=", 0) == 0)
+            {
+              if (arg == "--set" && i + 1 >= argc)
+                return fail("--set needs an argument \"Subsection/Entry = "
+                            "value\"");
+              line.overrides.push_back(arg == "--set" ? argv[++i] :
+                                                        arg.substr(6));
+            }
+          else if (arg == "--version")
+            {
+              if (root)
+                std::cout << version_line() << std::endl;
+              line.exit_code = 0;
+              return line;
+            }
           else if (arg == "-h" || arg == "--help")
             {
               if (root)
@@ -445,7 +473,7 @@ namespace DuctileContact
       const std::string &file_name = line.file_name;
       try
         {
-          parameters.parse(file_name);
+          parameters.parse(file_name, line.overrides);
           if (!line.print_parameters)
             {
               parallel::distributed::Triangulation<dim> coarse(comm);
@@ -474,6 +502,19 @@ namespace DuctileContact
                pos != std::string::npos;
                pos = message.find("<input string>"))
             message.replace(pos, 14, "'" + file_name + "'");
+          // A line past the file's end is one of the --set overrides.
+          if (!line.overrides.empty())
+            {
+              std::ifstream file(file_name);
+              const auto    n_lines = std::count(
+                std::istreambuf_iterator<char>(file),
+                std::istreambuf_iterator<char>(),
+                '\n');
+              unsigned int number = 0;
+              if (std::sscanf(message.c_str(), "line %u:", &number) == 1 &&
+                  number > n_lines)
+                message = "--set: " + message.substr(message.find(':') + 2);
+            }
           if (root)
             std::cerr << "Error in input file '" << file_name
                       << "': " << message << std::endl;
@@ -542,6 +583,12 @@ namespace DuctileContact
             line.file_name,
             dir + "/input.prm",
             std::filesystem::copy_options::overwrite_existing);
+          if (!line.overrides.empty())
+            {
+              std::ofstream input(dir + "/input.prm", std::ios::app);
+              input << "\n# Overrides given on the command line (--set):\n"
+                    << overrides_as_prm(line.overrides);
+            }
           std::ofstream all(dir + "/parameters.prm");
           parameters.prm.print_parameters(
             all,
@@ -602,6 +649,9 @@ namespace DuctileContact
       return 1;
     if (root)
       {
+        log << version_line() << "\n";
+        for (const std::string &o : line.overrides)
+          log << "--set " << o << "\n";
         log << "ductile-contact: " << line.file_name << " on "
             << Utilities::MPI::n_mpi_processes(comm)
             << " MPI rank(s), results in " << parameters.output.directory << "/"

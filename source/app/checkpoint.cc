@@ -5,6 +5,7 @@
 #include <deal.II/distributed/solution_transfer.h>
 
 #include <ductile_contact/app/checkpoint.h>
+#include <ductile_contact/app/version.h>
 #include <ductile_contact/core/input_error.h>
 
 #include <algorithm>
@@ -107,6 +108,7 @@ namespace DuctileContact
       {
         write_file(writing + "/state.bin", state);
         write_file(writing + "/parameters.prm", parameters);
+        write_file(writing + "/version.txt", version_line() + "\n");
         write_file(writing + "/coarse_mesh", coarse_mesh_fingerprint(tria));
       }
     MPI_Barrier(comm);

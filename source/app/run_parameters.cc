@@ -141,8 +141,35 @@ namespace DuctileContact
 
 
 
+  std::string
+  overrides_as_prm(const std::vector<std::string> &overrides)
+  {
+    std::string text;
+    for (const std::string &o : overrides)
+      {
+        const auto equal = o.find('=');
+        if (equal == std::string::npos)
+          throw InputError("--set '" + o +
+                           "': expected \"Subsection/Entry = value\"");
+        const std::vector<std::string> path =
+          Utilities::split_string_list(o.substr(0, equal), '/');
+        const std::string value = Utilities::trim(o.substr(equal + 1));
+        if (path.empty() || path.back().empty())
+          throw InputError("--set '" + o + "': no entry name before '='");
+        for (std::size_t k = 0; k + 1 < path.size(); ++k)
+          text += "subsection " + path[k] + "\n";
+        text += "set " + path.back() + " = " + value + "\n";
+        for (std::size_t k = 0; k + 1 < path.size(); ++k)
+          text += "end\n";
+      }
+    return text;
+  }
+
+
+
   void
-  RunParameters::parse(const std::string &file_name)
+  RunParameters::parse(const std::string              &file_name,
+                       const std::vector<std::string> &overrides)
   {
     if (file_name.empty())
       {
@@ -167,7 +194,7 @@ namespace DuctileContact
                        "' is empty (a run needs at least its scene and "
                        "boundary conditions; 'ductile-contact "
                        "--print-parameters' lists every entry)");
-    parse_string(text.str());
+    parse_string(text.str() + "\n" + overrides_as_prm(overrides));
   }
 
 

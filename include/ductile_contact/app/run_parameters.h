@@ -13,9 +13,18 @@
 
 #include <deque>
 #include <string>
+#include <vector>
 
 namespace DuctileContact
 {
+  /**
+   * The command line's overrides "A/B/Entry = value" (--set) as .prm text:
+   * subsection A, subsection B, set Entry = value, end, end. Throws
+   * InputError for an override without '=' or without an entry name.
+   */
+  std::string
+  overrides_as_prm(const std::vector<std::string> &overrides);
+
   /**
    * Every input of a run. The in-class defaults of the structs are the only
    * defaults (entries are bound with ParameterHandler::add_parameter).
@@ -47,7 +56,8 @@ namespace DuctileContact
     /// Parses and checks @p file_name; throws InputError or deal.II's
     /// parameter exceptions. With an empty name, only declares (defaults).
     void
-    parse(const std::string &file_name);
+    parse(const std::string              &file_name,
+          const std::vector<std::string> &overrides = {});
 
     /// Same as parse(), from text (used by tests).
     void
