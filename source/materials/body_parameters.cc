@@ -99,6 +99,17 @@ namespace DuctileContact
                "the paper's (37), its first-order truncation, whose plastic "
                "work falls short of int yhat dalpha by about y_0/mu "
                "relative (a negative plastic dissipation).");
+    prm.add_parameter(
+      "Hold stiffness factor",
+      plastic.hold_stiffness_factor,
+      "f of the hold of alpha at points that do not yield, c = f (mu g tr "
+      "bbar_tr + yhat'(alpha_n)) (doc/model.md section 3.1, choice 3) [-]; "
+      "at least 1. The finite hold lets alpha creep at non-yielding points "
+      "beside a plastic zone, where the stress is below yield: their plastic "
+      "work falls short of the stored energy, a negative plastic dissipation "
+      "of order 1/f (the coarse paper scene: -0.36 J with f = 1, -0.041 J "
+      "with f = 10, of 19.5 J plastic work).",
+      Patterns::Double(1.));
     prm.add_parameter("Length scale",
                       plastic_length_scale,
                       "l_p of the gradient term y_0 l_p^2 |grad alpha|^2/2 "

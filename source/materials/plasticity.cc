@@ -288,7 +288,9 @@ namespace DuctileContact
           // Hold alpha at alpha_n with the yielding branch's slope, against
           // the force r_n that held it there at the last accepted step.
           e.r +=
-            (mu_g * trace(b_bar_tr) + hardening_slope_of(history_n.alpha, p)) *
+            p.hold_stiffness_factor *
+              (mu_g * trace(b_bar_tr) +
+               hardening_slope_of(history_n.alpha, p)) *
               (alpha - history_n.alpha) +
             history_n.r;
         }

@@ -58,6 +58,10 @@ namespace DuctileContact
     double volumetric_switch_width = MaterialDefaults::volumetric_switch_width;
     /// How the flow updates (C^p)^{-1}.
     FlowIntegration flow_integration = FlowIntegration::exponential;
+    /// The hold of alpha at points that do not yield, c (alpha - alpha_n),
+    /// has c = this factor times the yielding branch's slope (doc/model.md
+    /// section 3.1, choice 3) [-].
+    double hold_stiffness_factor = 1.;
     /// Whether the plastic energy is degraded by the phase field
     /// (plastic_energy_density(); the crack driver 'elastic and plastic
     /// energy').
@@ -184,9 +188,10 @@ namespace DuctileContact
    *    where chi_p switches, |tau_tr| ~ 0.8 y_0 and the direction differs
    *    from n_tr by under 1 %;
    *  - where chi_p = 0 the local part is eta_p (alpha - alpha_n)/dt + c
-   *    (alpha - alpha_n) + r_n with c = mu g_dev tr[bbar_tr] +
-   *    yhat'(alpha_n), about the slope the yielding branch has there (~3 mu
-   *    + h; the undegraded hardening slope), and r_n the local part at the last accepted state
+   *    (alpha - alpha_n) + r_n with c = f (mu g_dev tr[bbar_tr] +
+   *    yhat'(alpha_n)), f the hold_stiffness_factor times about the slope
+   *    the yielding branch has there (~3 mu + h; the undegraded hardening
+   *    slope), and r_n the local part at the last accepted state
    *    (PlasticHistory::r): the continuum equation (alpha = alpha_n, no
    *    flow) is the same, but alpha is held at alpha_n as firmly as the
    *    yielding points hold theirs, and the force r_n with which the rest
