@@ -273,15 +273,6 @@ namespace DuctileContact
                     "plasticity (set Plasticity = true for the plastic "
                     "drivers)");
         check_input(crack.driver != CrackDriverType::elastic_plastic_energy ||
-                      crack.work_driver.critical_work_density > 0.,
-                    f + "Critical work density",
-                    value(crack.work_driver.critical_work_density),
-                    "it must be positive with Crack driver = elastic and "
-                    "plastic energy (the degraded part of W_p is rounded over "
-                    "w_c/10 above w_c, so that the flow resistance is "
-                    "continuous; with w_c = 0 it would drop by (1 - g) y_0 at "
-                    "the first yield)");
-        check_input(crack.driver != CrackDriverType::elastic_plastic_energy ||
                       crack.work_driver.factor == 1.,
                     f + "Driver factor",
                     value(crack.work_driver.factor),

@@ -23,8 +23,9 @@ namespace DuctileContact
     if (driver == CrackDriverType::elastic_plastic_energy)
       {
         // -dPsi/ds / (-g_k'(s)) of Psi^e + Psi^p_loc (plastic_energy_density()).
-        const auto [phi, slope] = degradable_plastic_energy(
-          plastic_work_density(alpha, plastic), plastic.critical_work_density);
+        const auto [phi, slope] =
+          degradable_plastic_energy(plastic_work_density(alpha, plastic),
+                                    plastic);
         d.value = m.psi_plus + phi;
         d.d_dF  = m.dpsi_plus_dF;
         d.d_dalpha =

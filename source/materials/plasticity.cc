@@ -5,6 +5,7 @@
 #include <ductile_contact/materials/degradation.h>
 #include <ductile_contact/materials/plasticity.h>
 
+#include <algorithm>
 #include <utility>
 
 namespace DuctileContact
@@ -54,16 +55,22 @@ namespace DuctileContact
              0.5 * p.linear_hardening * alpha * alpha;
     }
 
-    /// Width w_r of the rounded bracket phi, relative to w_c.
-    constexpr double bracket_rounding = 0.1;
+    /// Width w_r of the rounded bracket phi: w_c/10, at least the work
+    /// y_0/100 of 1 % plastic strain at the initial yield stress.
+    double
+    rounding_width(const PlasticityParameters &p)
+    {
+      return std::max(0.1 * p.critical_work_density, 0.01 * p.initial_yield);
+    }
 
     /// phi(W) and phi'(W) of degradable_plastic_energy().
     template <typename Number>
     std::pair<Number, Number>
-    degradable_part(const Number &work, const double w_c)
+    degradable_part(const Number &work, const PlasticityParameters &p)
     {
       using Pair         = std::pair<Number, Number>;
-      const double width = bracket_rounding * w_c;
+      const double w_c   = p.critical_work_density;
+      const double width = rounding_width(p);
       const Number x     = work - w_c;
       if (value_of(x) <= 0.)
         return Pair(Number(0.), Number(0.));
@@ -84,7 +91,7 @@ namespace DuctileContact
       if (!p.degrade_plastic_energy)
         return y;
       const Number slope =
-        degradable_part(plastic_work_of(alpha, p), p.critical_work_density)
+        degradable_part(plastic_work_of(alpha, p), p)
           .second;
       return y * (1. - (1. - degradation_of(s, p)) * slope);
     }
@@ -317,9 +324,9 @@ namespace DuctileContact
 
 
   std::pair<double, double>
-  degradable_plastic_energy(const double work, const double w_c)
+  degradable_plastic_energy(const double work, const PlasticityParameters &p)
   {
-    return degradable_part(work, w_c);
+    return degradable_part(work, p);
   }
 
 
@@ -333,7 +340,7 @@ namespace DuctileContact
     if (!p.degrade_plastic_energy)
       return work;
     return work - (1. - degradation_of(s, p)) *
-                    degradable_part(work, p.critical_work_density).first;
+                    degradable_part(work, p).first;
   }
 
 

@@ -83,12 +83,16 @@ namespace DuctileContact
   plastic_work_density(const double alpha, const PlasticityParameters &p);
 
   /// The degradable part phi(W_p) of the plastic energy [J/m^3] and its
-  /// slope phi'(W_p): W_p above the critical work density w_c, with the
-  /// bracket rounded over a width w_r = w_c/10 so that its slope is
-  /// continuous (phi = (W_p - w_c)^2/(2 w_r) below w_c + w_r, W_p - w_c -
-  /// w_r/2 beyond; the sharp bracket <W_p> for w_c = 0).
+  /// slope phi'(W_p): W_p above the critical work density w_c =
+  /// p.critical_work_density, with the bracket rounded over a width w_r =
+  /// max(w_c/10, y_0/100) so that its slope is continuous (phi = (W_p -
+  /// w_c)^2/(2 w_r) below w_c + w_r, W_p - w_c - w_r/2 beyond). The floor
+  /// y_0/100, the work of 1 % plastic strain, keeps the softening of the
+  /// flow resistance, (1 - g_k) yhat over w_r, from turning abrupt for
+  /// small w_c (with w_r = w_c/10 alone a coarse paper scene with w_c =
+  /// 0.05 MJ/m^3 stalled at the first yield).
   std::pair<double, double>
-  degradable_plastic_energy(const double work, const double w_c);
+  degradable_plastic_energy(const double work, const PlasticityParameters &p);
 
   /**
    * Local part of the plastic stored energy [J/m^3] (doc/model.md (20) and
