@@ -125,6 +125,9 @@ main(int argc, char **argv)
   const auto [a, p0] = Testing::fit_hertz_pressure(r2,
                                                    nodes.at("pressure"),
                                                    std::pow(0.8 * a_h, 2));
+  out << std::setprecision(5) << "P " << P << " N, a " << a << " m, p0 " << p0
+      << " Pa, approach " << approach << " m" << std::setprecision(6)
+      << std::endl;
   std::cout << "P " << P << ", a " << a << " (Hertz " << a_h << "), p0 " << p0
             << " (Hertz " << p0_h << "), approach " << approach << " (Hertz "
             << approach_h << ")" << std::endl;

@@ -99,6 +99,10 @@ end
   const double work    = s.at("external_work")[last];
   const double balance = std::abs(s.at("energy_residual")[last]) / work;
   std::cout << "energy residual / work " << balance << std::endl;
+  out << std::setprecision(5) << "at the end: drag " << s.at("F2_x")[last]
+      << " N, normal " << s.at("F2_y")[last] << " N, external work " << work
+      << " J, frictional dissipation " << s.at("contact1_dissipation")[last]
+      << " J" << std::setprecision(6) << std::endl;
   out << "sliding: every node in contact slips: " << Testing::yes_no(all_slip)
       << std::endl
       << "sliding: friction force = mu_c x normal contact force (1e-6): "

@@ -149,6 +149,11 @@ namespace
         << "and over the crack's steps (>= 4 iterations), median > 1.6: "
         << Testing::yes_no(crack_rates.size() >= 3 && median(crack_rates) > 1.6)
         << "\n";
+    out << std::setprecision(5) << "peak " << peak / thickness * 1e-6
+        << " kN/mm at u = " << t.at("u2_y")[k_max] * 1e6
+        << " um, end force / peak " << F[n - 1] / peak << ", W_p "
+        << t.at("plastic_work")[n - 1] << " J, crack energy "
+        << crack_ratio << " g_c A" << std::setprecision(6) << "\n";
     std::cout << "peak " << peak / thickness * 1e-6
               << " kN/mm at u = " << t.at("u2_y")[k_max] * 1e6 << " um, alpha "
               << t.at("max_alpha")[k_max] << ", W_p/W_ext " << plastic_share

@@ -101,6 +101,10 @@ subsection Output
       << Testing::yes_no(monotone) << "\n"
       << "rate defined in most steps, median > 1.7: "
       << Testing::yes_no(rates.size() > n / 2 && median_rate > 1.7) << "\n";
+  out << std::setprecision(5) << "peak force " << peak << " N, end force "
+      << F[n - 1] << " N, radius shrink at mid-length " << shrink_mid
+      << ", plastic work " << t.at("plastic_work")[n - 1] << " J, max alpha "
+      << t.at("max_alpha")[n - 1] << "\n";
   std::cout << "peak " << peak << " N at step " << k_max << ", shrink mid "
             << shrink_mid << " at 3L/4 " << shrink_qtr << ", median rate "
             << median_rate << " of " << rates.size() << std::endl;
