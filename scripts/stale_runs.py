@@ -7,7 +7,8 @@ or, for runs written before the program recorded it, the last commit that
 changed the statistics file. The physics is every file under
 source/materials, source/phase_field, source/contact and source/assembly
 (and their headers under include/ductile_contact/); a run is stale when a
-commit that changed the physics is newer than the run's commit.
+commit that changed the physics, other than in comments only, is newer than
+the run's commit.
 
 A run that stays on purpose (a historical comparison) is listed in a file
 'historical' in its folder or in one of its parents: one line of reason.
@@ -36,10 +37,24 @@ def git(*args):
                           text=True).stdout.strip()
 
 
+def changes_code(h):
+    """Whether commit h changed a line of the physics that is not a comment."""
+    diff = git("show", "--format=", "--unified=0", h, "--", *PHYSICS)
+    for line in diff.splitlines():
+        if line.startswith(("+++", "---")) or not line.startswith(("+", "-")):
+            continue
+        text = line[1:].strip()
+        if text and not text.startswith(("//", "*", "/*")):
+            return True
+    return False
+
+
 def physics_commits():
-    """Commits that changed the physics, newest first: (hash, unix time)."""
+    """Commits that changed the physics (not only its comments), newest
+    first: (hash, unix time)."""
     out = git("log", "--format=%H %ct", "--", *PHYSICS)
-    return [(h, int(t)) for h, t in (line.split() for line in out.splitlines())]
+    commits = [(h, int(t)) for h, t in (line.split() for line in out.splitlines())]
+    return [(h, t) for h, t in commits if changes_code(h)]
 
 
 def run_commit(folder):
