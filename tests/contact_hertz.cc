@@ -39,6 +39,8 @@ end
   struct Result
   {
     double a_error, p0_error, balance, penetration, tangent_error;
+    /// Load per unit length, half-width and peak pressure of the fit.
+    double P, a, p0;
   };
 
   Result
@@ -73,7 +75,10 @@ end
             // master; the top face's reaction F balances its opposite.
             std::abs(F - stats.at("contact1_force_y").back()) / std::abs(F),
             stats.at("contact1_max_penetration").back(),
-            stats.at("tangent_error").back()};
+            stats.at("tangent_error").back(),
+            P,
+            a,
+            p0};
   }
 } // namespace
 
@@ -96,5 +101,7 @@ main(int argc, char **argv)
       << Testing::yes_no(fine.penetration < 1e-6 * 0.0025) << std::endl
       << "consistent tangent (K d against central differences of R along the "
          "last Newton update, 1e-6): "
-      << Testing::yes_no(fine.tangent_error < 1e-6) << std::endl;
+      << Testing::yes_no(fine.tangent_error < 1e-6) << std::endl
+      << std::setprecision(5) << "h = a/4: P " << fine.P << " N/m, a "
+      << fine.a << " m, p0 " << fine.p0 << " Pa" << std::endl;
 }
