@@ -18,7 +18,7 @@ source "$here/../../../scripts/env.sh"
 np=${1:-2}
 shift || true
 cases=("$@")
-((${#cases[@]})) || cases=(0.05:1e-3 0.05:5e-4 0.05:2e-3 0.035:1e-3 0.05:1e-3:work)
+((${#cases[@]})) || cases=(0.05:1e-3 0.05:5e-4 0.05:2e-3 0.035:1e-3 0.05:1e-3:work 0.05:1e-3:energy)
 require_build
 scene="$project_root/prm/ductile_notch.prm"
 height=$(sed -n 's/^# Specimen height: \([0-9.]*\) mm.*/\1/p' "$scene")
@@ -42,6 +42,14 @@ for case in "${cases[@]}"; do
     printf '%s\n' "subsection Body 1" "subsection Fracture" \
       "set Crack driver = elastic plus plastic work" \
       "set Critical work density = 0" "set Driver factor = 1" "end" "end" \
+      >> "$dir/scene.prm"
+  elif [[ $driver == energy ]]; then
+    # The variational driver, its plastic energy degraded from the first
+    # yield (w_c = 0), the box s_n <= s <= 1 alone.
+    printf '%s\n' "subsection Body 1" "subsection Fracture" \
+      "set Crack driver = elastic and plastic energy" \
+      "set Critical work density = 0" "end" "end" \
+      "subsection Coupling" "set Irreversibility = bound" "end" \
       >> "$dir/scene.prm"
   fi
   echo "== $name"
