@@ -35,8 +35,9 @@ def parameter(prm, name):
 def evaluate(directory):
     name = os.path.basename(directory)
     h = float(re.match(r"h([\d.]+)-", name).group(1)) * 1e-3
-    delta = float(re.search(r"delta([\d.e+-]+?)(-work)?$", name).group(1))
-    driver = "plastic work" if name.endswith("-work") else "elastic"
+    delta = float(re.search(r"delta([\d.e+-]+?)(-work|-energy)?$", name).group(1))
+    driver = ("plastic work" if name.endswith("-work") else
+              "elastic and plastic energy" if name.endswith("-energy") else "elastic")
     prm = open(os.path.join(directory, "scene.prm")).read()
     g_c = parameter(prm, "Critical energy release rate")
     rows = read_statistics(os.path.join(directory, "statistics"))
