@@ -43,21 +43,14 @@ main()
   unsigned int            open_samples = 0, closed_samples = 0, plastic = 0;
   for (unsigned int sample = 0; sample < 60; ++sample)
     {
-      PlasticHistory h;
-      Tensor<2, dim> Fp = unit_symmetric_tensor<dim>();
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          Fp[i][j] += 0.01 * d(gen);
-      Fp /= std::cbrt(determinant(Fp));
-      h.Cp_inv = symmetrize(invert(transpose(Fp) * Fp));
-      h.alpha  = 0.01;
+      const auto history = Testing::random_plastic_history(gen, d, 0.01);
+      const Tensor<2, dim> &Fp = history.first;
+      const PlasticHistory &h  = history.second;
       // The last 20 samples stay near the plastic deformation of the
       // history (F = (I + A) F^p, small A): mostly below yield.
       const bool     near_yield = sample >= 40;
-      Tensor<2, dim> F          = unit_symmetric_tensor<dim>();
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          F[i][j] += (near_yield ? 0.001 : 0.03) * d(gen);
+      Tensor<2, dim> F =
+        Testing::perturbed_identity(gen, d, near_yield ? 0.001 : 0.03);
       if (near_yield)
         F = F * Fp;
       const double           alpha = h.alpha + 0.002 * (1.2 + d(gen));

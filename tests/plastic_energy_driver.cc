@@ -54,19 +54,13 @@ main()
   unsigned int below = 0, rounded = 0, above = 0, yielding = 0;
   for (unsigned int sample = 0; sample < 60; ++sample)
     {
-      PlasticHistory h;
-      Tensor<2, dim> Fp = unit_symmetric_tensor<dim>();
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          Fp[i][j] += 0.01 * d(gen);
-      Fp /= std::cbrt(determinant(Fp));
-      h.Cp_inv           = symmetrize(invert(transpose(Fp) * Fp));
+      auto history = Testing::random_plastic_history(gen, d, 0.);
+      const Tensor<2, dim> &Fp = history.first;
+      PlasticHistory       &h  = history.second;
       h.alpha            = 0.015 + 0.011 * d(gen);
-      Tensor<2, dim> F   = unit_symmetric_tensor<dim>();
       const bool     low = sample % 3 == 0;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          F[i][j] += (low ? 0.001 : 0.03) * d(gen);
+      Tensor<2, dim> F =
+        Testing::perturbed_identity(gen, d, low ? 0.001 : 0.03);
       if (low)
         F = F * Fp;
       const double alpha = h.alpha + 0.001 * (1. + d(gen));
@@ -99,7 +93,8 @@ main()
         plastic_update(F, h, alpha, s, dt, plain, false, m.yielding);
       const double ea = 1e-7;
       const auto   difference = [&](const double a) {
-        return plastic_energy_density(a, s, p) - plastic_energy_density(a, s, plain);
+        return plastic_energy_density(a, s, p) -
+               plastic_energy_density(a, s, plain);
       };
       const double fd = (difference(alpha + ea) - difference(alpha - ea)) /
                         (2. * ea);

@@ -429,15 +429,17 @@ end
   }
 
   /**
-   * .prm text of the coarse copy of the paper's scene (prm/block_on_plate.prm
-   * on plate 8 x 5 x 1 and block 2 x 2 x 2 cells, 16 steps of 0.6 mm to
-   * 9.6 mm, no field output) used by block_on_plate and
-   * block_on_plate_adaptive; @p extra is appended (later entries win).
+   * .prm text of the coarse copy of the paper's scene (@p scene, a file of
+   * prm/, on plate 8 x 5 x 1 and block 2 x 2 x 2 cells, 16 steps of 0.6 mm
+   * to 9.6 mm, no field output) used by block_on_plate,
+   * block_on_plate_adaptive and block_on_plate_tearing; @p extra is
+   * appended (later entries win).
    */
   inline std::string
-  coarse_block_on_plate_prm(const std::string &extra = "")
+  coarse_block_on_plate_prm(const std::string &extra = "",
+                            const std::string &scene = "block_on_plate.prm")
   {
-    return shipped_scene("block_on_plate.prm") + R"(
+    return shipped_scene(scene) + R"(
 subsection Mesh
   subsection Two bodies
     set Plate subdivisions = 8, 5, 1
@@ -609,6 +611,37 @@ end
     add(derivative(dealii::Tensor<2, dim>(), 1., 0.), d_dalpha);
     add(derivative(dealii::Tensor<2, dim>(), 0., 1.), d_ds);
     return std::sqrt(diff / norm);
+  }
+
+  /// I + A with the entries of A drawn from @p d (by rows) times
+  /// @p amplitude: a random deformation gradient near the identity.
+  template <typename Generator, typename Distribution>
+  dealii::Tensor<2, DuctileContact::dim>
+  perturbed_identity(Generator &gen, Distribution &d, const double amplitude)
+  {
+    dealii::Tensor<2, DuctileContact::dim> F =
+      dealii::unit_symmetric_tensor<DuctileContact::dim>();
+    for (unsigned int i = 0; i < DuctileContact::dim; ++i)
+      for (unsigned int j = 0; j < DuctileContact::dim; ++j)
+        F[i][j] += amplitude * d(gen);
+    return F;
+  }
+
+  /// A random isochoric plastic deformation F^p (perturbed_identity() with
+  /// amplitude 0.01, scaled to det 1) and the history with its (C^p)^{-1}
+  /// and @p alpha.
+  template <typename Generator, typename Distribution>
+  std::pair<dealii::Tensor<2, DuctileContact::dim>,
+            DuctileContact::PlasticHistory>
+  random_plastic_history(Generator &gen, Distribution &d, const double alpha)
+  {
+    dealii::Tensor<2, DuctileContact::dim> Fp =
+      perturbed_identity(gen, d, 0.01);
+    Fp /= std::cbrt(determinant(Fp));
+    DuctileContact::PlasticHistory h;
+    h.Cp_inv = symmetrize(invert(transpose(Fp) * Fp));
+    h.alpha  = alpha;
+    return {Fp, h};
   }
 
   /// "yes"/"no" for a condition: what the output file records.
