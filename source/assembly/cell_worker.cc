@@ -396,14 +396,8 @@ namespace DuctileContact
     if (history_new)
       {
         history_new[q].driving_energy_max = driver.psi_H;
-        // Beyond -dPsi/ds / (-g_k'): psi^+, and the degraded plastic
-        // energy's phi(W_p) with the variational driver.
-        const double variational =
-          body.crack.driver == CrackDriverType::elastic_plastic_energy ?
-            psi.value :
-            m.psi_plus;
         sums.history_work_increment +=
-          -driver.g1 * (driver.psi_H - variational) * ds * JxW;
+          -driver.g1 * (driver.psi_H - psi.variational) * ds * JxW;
       }
     add_phase_field_rows(m,
                          driver,

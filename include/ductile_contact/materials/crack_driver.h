@@ -37,7 +37,11 @@ namespace DuctileContact
   /// its derivatives with respect to F, alpha and s.
   struct DrivingEnergy
   {
-    double                 value = 0.;
+    double value = 0.;
+    /// The part of value that is -dPsi/ds / (-g_k'(s)) of the free energy:
+    /// psi^+, and with 'elastic and plastic energy' all of it. The history
+    /// driving work counts the work of the driver beyond it.
+    double                 variational = 0.;
     dealii::Tensor<2, dim> d_dF;
     double                 d_dalpha = 0., d_ds = 0.;
   };
