@@ -3,7 +3,7 @@
 #   docker build -t ductile-contact .
 # Run a scene (results in the mounted folder):
 #   docker run --rm -v "$PWD/results:/ductile-contact/results" ductile-contact \
-#     mpirun -np 2 build/ductile-contact prm/block_on_plate.prm
+#     mpirun -np 2 ductile-contact prm/block_on_plate.prm
 FROM debian:bookworm
 
 ENV DEBIAN_FRONTEND=noninteractive \
@@ -20,3 +20,5 @@ COPY . .
 # The whole suite (about 10 minutes on 2 cores): the image is built only if
 # it passes.
 RUN scripts/test.sh
+# The program on the PATH, the scenes in /usr/local/share/ductile-contact/prm.
+RUN cmake --install build --prefix /usr/local

@@ -20,7 +20,12 @@ export OMPI_MCA_btl_vader_single_copy_mechanism=none
 project_root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_dir=${BUILD_DIR:-$project_root/build}
 # The application; benchmark scripts call require_build before running it.
+# Installed (cmake --install), the scripts live in PREFIX/share/ductile-contact
+# and the program in PREFIX/bin.
 exe="$build_dir/ductile-contact"
+if [[ -z ${BUILD_DIR:-} && ! -x $exe && -x $project_root/../../bin/ductile-contact ]]; then
+  exe=$(cd "$project_root/../../bin" && pwd)/ductile-contact
+fi
 require_build() {
   [[ -x "$exe" ]] || { echo "build first: scripts/build.sh" >&2; exit 1; }
 }
@@ -33,4 +38,21 @@ run_finished() {
 run_scene() {
   mpirun -np "$1" "$exe" "$2/scene.prm" > "$2/screen.txt" 2>&1 ||
     echo "   stopped early, see $2/screen.txt"
+}
+# mesh_override SRC: for a scene file SRC with a relative Mesh/Gmsh/File name
+# (relative to SRC's folder), the subsection that sets it again as an absolute
+# path, for copies of SRC in other folders (nothing if there is none).
+mesh_override() {
+  local mesh
+  mesh=$(sed -n 's/^[[:space:]]*set File name[[:space:]]*=[[:space:]]*\([^#[:space:]]*\).*/\1/p' "$1" | tail -1)
+  if [[ -n $mesh && $mesh != /* ]]; then
+    printf 'subsection Mesh\n  subsection Gmsh\n    set File name = %s\n  end\nend\n' \
+      "$(cd "$(dirname "$1")" && pwd)/$mesh"
+  fi
+}
+# copy_scene SRC DST: a copy of the scene file SRC at DST that reads the same
+# mesh; the copy starts with SRC's text.
+copy_scene() {
+  cp "$1" "$2"
+  mesh_override "$1" >> "$2"
 }

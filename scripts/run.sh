@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs the main job on 2 MPI ranks:
-# the paper's scene, prm/block_on_plate.prm (~3½ min), or the scene given.
+# the paper's scene, prm/block_on_plate.prm, or the scene given (run times:
+# benchmarks/performance/run_times.md).
 # Usage: scripts/run.sh [FILE.prm]     (NP=4 scripts/run.sh for 4 ranks)
 # Leaves in the scene's Output/Directory (results/block_on_plate for the
 # default): statistics, log.txt, solution.pvd (ParaView), plot.png (forces,

@@ -90,12 +90,12 @@ run_one() {
     sets+=(--set "${names[$s]} = ${values[$s]}")
   done
   sets+=(--set "Output/Directory = $dir")
-  cp "$scene" "$dir/scene.prm"
+  copy_scene "$scene" "$dir/scene.prm"
   printf '%s\n' "${sets[@]}" | grep -v '^--set$' > "$dir/overrides"
   echo "== run $k on $np rank(s): ${combination//	/, } ($(date +%H:%M))"
   local start=$(date +%s%N)
-  # From the project root, like scripts/run.sh: mesh paths in the shipped
-  # scenes are relative to it.
+  # From the project root, like scripts/run.sh (Output/Directory is relative
+  # to where the program starts; the copy reads the scene's mesh).
   (cd "$project_root" && mpirun -np "$np" "$exe" "${sets[@]}" "$dir/scene.prm" > "$dir/screen.txt" 2>&1)
   local code=$?
   echo "$code" > "$dir/exit_code"

@@ -28,6 +28,7 @@ for entry in "${scenes[@]}"; do
   # solution output (a subsection may be entered again).
   sed -e "s|^\( *set End time *=\).*|\1 $end|" \
       "$root/prm/$scene.prm" > "$out/scene.prm"
+  mesh_override "$root/prm/$scene.prm" >> "$out/scene.prm"
   printf 'subsection Output\n  set Directory = %s\n  set Interval = 0\nend\n' \
       "$out" >> "$out/scene.prm"
   echo "== $label $scene (end time $end)"

@@ -42,6 +42,7 @@ for scene in "${scenes[@]}"; do
     mkdir -p "$out"
     sed -e "s|^\( *set End time *=\).*|\1 ${end_time[$scene]}|" \
         "$root/prm/$scene.prm" > "$out/scene.prm"
+    mesh_override "$root/prm/$scene.prm" >> "$out/scene.prm"
     printf 'subsection Output\n  set Directory = %s\n  set Interval = 0\nend\n' \
         "$out" >> "$out/scene.prm"
     { echo "subsection Linear solver"

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Issue #25: the paper's scene (prm/block_on_plate.prm) and its variants:
+# The paper's scene (prm/block_on_plate.prm) and its variants:
 # the viscosities eta_p and eta_f halved, the load step halved, the plate
 # refined at the clamp (by a box, or adaptively where alpha > 0.002 or 1e-4, once
-# or twice: issue #28), and the plastic work crack driver. report.py
+# or twice), and the plastic work crack driver. report.py
 # writes results.md and the plots (force curve, energies, fields).
 # Usage: benchmarks/paper_scene/run.sh [-j 2] [VARIANT...]
 #   default: every variant below, one after the other on NP (2) ranks;
@@ -64,7 +64,7 @@ run_variant() {
   [[ -v settings[$variant] ]] || { echo "unknown variant $variant" >&2; return 1; }
   rm -rf "$out"
   mkdir -p "$out"
-  cp "$project_root/prm/block_on_plate.prm" "$out/scene.prm"
+  copy_scene "$project_root/prm/block_on_plate.prm" "$out/scene.prm"
   printf 'subsection Output\n  set Directory = %s\n  set Interval = 113\nend\n' \
     "$out" >> "$out/scene.prm"
   tr ';@' '\n;' <<< "${settings[$variant]}" >> "$out/scene.prm"

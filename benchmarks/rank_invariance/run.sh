@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue #26 item 7: every shipped scene of prm/ on 1, 2 and 3 MPI ranks
+# Every shipped scene of prm/ on 1, 2 and 3 MPI ranks
 # (3 ranks share the 2 cores: OMPI_MCA_mpi_yield_when_idle), each up to the
 # end time below (the whole scene where it is cheap, otherwise through the
 # phase that exercises its physics: contact, yield, a running crack).
@@ -43,6 +43,7 @@ for s in "${scenes[@]}"; do
     mkdir -p "$out"
     {
       cat "$project_root/prm/$s.prm"
+      mesh_override "$project_root/prm/$s.prm"
       printf '%s\n' "subsection Output" "  set Directory = $out" \
         "  set Interval = 0" "end"
       [[ -n ${end_time[$s]} ]] && printf '%s\n' "subsection Load stepping" \

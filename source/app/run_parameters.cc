@@ -4,6 +4,7 @@
 #include <ductile_contact/core/input_error.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -167,6 +168,32 @@ namespace DuctileContact
 
 
 
+  /// Mesh/Gmsh/File name of @p text (the file with its overrides) as an
+  /// absolute path, if it is given and relative: a relative name is read
+  /// from the folder of the input file @p file_name, wherever the program is
+  /// started. Returned as a subsection to append; empty if nothing changes.
+  std::string
+  mesh_file_relative_to(const std::string &text, const std::string &file_name)
+  {
+    ParameterHandler mesh;
+    std::string      name;
+    mesh.enter_subsection("Mesh");
+    mesh.enter_subsection("Gmsh");
+    mesh.add_parameter("File name", name);
+    mesh.leave_subsection();
+    mesh.leave_subsection();
+    mesh.parse_input_from_string(text, "", true);
+    namespace fs = std::filesystem;
+    if (name.empty() || fs::path(name).is_absolute())
+      return "";
+    const fs::path folder = fs::path(file_name).parent_path();
+    const fs::path path   = fs::absolute(folder / name).lexically_normal();
+    return "subsection Mesh\nsubsection Gmsh\nset File name = " +
+           path.string() + "\nend\nend\n";
+  }
+
+
+
   void
   RunParameters::parse(const std::string              &file_name,
                        const std::vector<std::string> &overrides)
@@ -194,7 +221,8 @@ namespace DuctileContact
                        "' is empty (a run needs at least its scene and "
                        "boundary conditions; 'ductile-contact "
                        "--print-parameters' lists every entry)");
-    parse_string(text.str() + "\n" + overrides_as_prm(overrides));
+    const std::string input = text.str() + "\n" + overrides_as_prm(overrides);
+    parse_string(input + mesh_file_relative_to(input, file_name));
   }
 
 
@@ -218,6 +246,14 @@ namespace DuctileContact
                 "C0IP terms of "
                 "the fourth-order crack functional need second "
                 "derivatives inside the cells)");
+    for (const BodyParameters &b : bodies)
+      check_input(!b.fracture || b.crack.initial_crack.empty() ||
+                    coupling.irreversibility != Irreversibility::history,
+                  b.subsection() + "/Fracture/Initial crack",
+                  b.crack.initial_crack,
+                  "an initial crack needs the bound s >= s_n "
+                  "(Coupling/Irreversibility = bound or history and bound); "
+                  "with history alone it would heal");
     for (const ContactPairParameters &c : contact_pairs)
       {
         c.check();

@@ -1,6 +1,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
+#include <ductile_contact/core/expression.h>
 #include <ductile_contact/core/input_error.h>
 #include <ductile_contact/discretisation/boundary_condition.h>
 
@@ -85,7 +86,7 @@ namespace DuctileContact
 
 
     std::unique_ptr<FunctionParser<dim>>
-    parse_vector_function(std::string                          expressions,
+    parse_vector_function(const std::string                   &expressions,
                           const unsigned int                   n_padding,
                           const std::map<std::string, double> &constants,
                           const std::string                   &entry)
@@ -95,26 +96,25 @@ namespace DuctileContact
                   entry,
                   expressions,
                   "it needs three expressions separated by ';'");
+      static const char *const which[] = {"first", "second", "third"};
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const std::string message =
+            expression_error(parts[d], "x,y,z,t", constants);
+          check_input(message.empty(),
+                      entry,
+                      expressions,
+                      "its " + std::string(which[d]) + " expression, '" +
+                        parts[d] +
+                        "', is not an expression of x, y, z, t and the "
+                        "Constants: " +
+                        message);
+        }
+      std::string padded = expressions;
       for (unsigned int i = 0; i < n_padding; ++i)
-        expressions += "; 0";
+        padded += "; 0";
       auto function = std::make_unique<FunctionParser<dim>>(dim + n_padding);
-      try
-        {
-          function->initialize("x,y,z,t", expressions, constants, true);
-          // muparser only reports unknown names on evaluation: do it now,
-          // before any work.
-          Vector<double> values(dim + n_padding);
-          function->vector_value(Point<dim>(), values);
-        }
-      catch (const ExceptionBase &e)
-        {
-          std::ostringstream info;
-          e.print_info(info);
-          throw InputError(entry,
-                           expressions,
-                           "it is not a valid expression of x, y, z, t (" +
-                             Utilities::trim(info.str()) + ")");
-        }
+      function->initialize("x,y,z,t", padded, constants, true);
       return function;
     }
   } // namespace

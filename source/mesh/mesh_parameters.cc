@@ -189,8 +189,10 @@ namespace DuctileContact
     prm.enter_subsection("Gmsh");
     prm.add_parameter("File name",
                       gmsh.file_name,
-                      "Gmsh .msh file (format 2.2 or 4.1, hexahedra), "
-                      "relative to the directory the program is started in.",
+                      "Gmsh .msh file (format 2.2 or 4.1, hexahedra); a "
+                      "relative name is read from the folder of the input "
+                      "file, wherever the program is started (parameters.prm "
+                      "in the results records it as an absolute path).",
                       Patterns::Anything());
     prm.leave_subsection();
   }
@@ -321,7 +323,8 @@ namespace DuctileContact
                     "Mesh/Gmsh/File name",
                     gmsh.file_name,
                     "this file cannot be opened (it must exist and be "
-                    "readable, relative to the working directory)");
+                    "readable; a relative name is read from the folder of "
+                    "the input file)");
       }
   }
 } // namespace DuctileContact

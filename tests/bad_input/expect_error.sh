@@ -23,6 +23,10 @@ if [[ $n -ne 1 ]]; then
   echo "FAIL: expected exactly one line matching '$expect', found $n"
   exit 1
 fi
+if grep -q -E "^(Message|Formula|Token|Position|Errc): " <<<"$out"; then
+  echo "FAIL: a library's own report came before the message"
+  exit 1
+fi
 if grep -q -E "Stacktrace|An error occurred in line|Aborting|signal" <<<"$out"; then
   echo "FAIL: the message must not be a crash report"
   exit 1

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Hertz point contact (issue #5 benchmark, validation.md rung 11): the scene
+# Hertz point contact (validation.md rung 11): the scene
 # prm/hertz_sphere.prm (sphere R = 1 m on a flat foundation, both E = 1 GPa,
 # nu = 0.3, quarter model) on meshes h = a/2, a/3, a/4 at the contact
 # (bodies 20 a = 0.2 m wide and deep), plus h = a/3 with bodies 40 a for the
@@ -30,7 +30,7 @@ for case in 2:0.2 3:0.2 3:0.4 4:0.2; do
     continue
   fi
   mkdir -p "$dir"
-  sed -e "s|prm/meshes/hertz_sphere.msh|$mesh|" -e "s|results/hertz_sphere|$dir|" \
+  sed -e "s|= meshes/hertz_sphere.msh|= $mesh|" -e "s|results/hertz_sphere|$dir|" \
     "$project_root/prm/hertz_sphere.prm" > "$dir/scene.prm"
   echo "== $name"
   run_scene "$np" "$dir"

@@ -11,7 +11,7 @@ np=${1:-1}
 require_build
 dir="$here/runs"
 mkdir -p "$dir"
-sed -e "s|results/ironing|$dir|" -e "s|prm/meshes/ironing.msh|$project_root/prm/meshes/ironing.msh|" \
+sed -e "s|results/ironing|$dir|" -e "s|= meshes/ironing.msh|= $project_root/prm/meshes/ironing.msh|" \
   "$project_root/prm/ironing.prm" > "$dir/scene.prm"
 mpirun -np "$np" "$exe" "$dir/scene.prm" > "$dir/screen.txt" 2>&1
 /usr/bin/python3 "$here/report.py" "$here"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The notched-tension scene prm/sent_coarse.prm (issue #3) run to complete
+# The notched-tension scene prm/sent_coarse.prm run to complete
 # fracture with the current build: statistics, screen output and the last
 # output step in runs/, then report.py (force curve, energies, a picture of
 # s on the slab with scripts/vtu_slice.py).
@@ -13,7 +13,7 @@ require_build
 dir="$here/runs"
 mkdir -p "$dir"
 sed -e "s|set Directory = results|set Directory = $dir|" \
-  -e "s|prm/meshes/sent_coarse.msh|$project_root/prm/meshes/sent_coarse.msh|" \
+  -e "s|= meshes/sent_coarse.msh|= $project_root/prm/meshes/sent_coarse.msh|" \
   "$project_root/prm/sent_coarse.prm" > "$dir/scene.prm"
 mpirun -np "$np" "$exe" "$dir/scene.prm" > "$dir/screen.txt" 2>&1
 /usr/bin/python3 "$here/report.py" "$here"
