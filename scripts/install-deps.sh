@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Installs the Debian packages ductile-contact needs, skipping those already present.
 # Works as root, or as a normal user through sudo. Usage: scripts/install-deps.sh [--plots]
-#   --plots  also installs python3-matplotlib, time, python3-vtk9 and xvfb (the
-#            main job's plots and 3-D pictures, the benchmarks)
+#   --plots  also installs python3-matplotlib, time, python3-vtk9, python3-h5py
+#            and xvfb (the main job's plots and 3-D pictures of vtu or HDF5
+#            output, the benchmarks)
 set -euo pipefail
 
 packages=(cmake make g++ libdeal.ii-dev libmumps-dev libmetis-dev openmpi-bin numdiff
           libopenblas0-pthread python3)
 if [[ "${1:-}" == "--plots" ]]; then
-  packages+=(python3-matplotlib time python3-vtk9 xvfb xauth)
+  packages+=(python3-matplotlib time python3-vtk9 python3-h5py xvfb xauth)
 fi
 
 missing=()

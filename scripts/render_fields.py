@@ -4,15 +4,17 @@ coloured by chosen fields, one PNG per field (no ParaView needed).
 
 Usage: scripts/render_fields.py RESULTS [FIELD ...] [--body ID] [--warp F]
                                 [--step N] [--out PREFIX]
-  RESULTS  a results directory holding solution.pvd (or the .pvd itself)
-  FIELD    point-data arrays of the .pvtu (default: s alpha)
+  RESULTS  a results directory holding solution.pvd or, from Output/Format =
+           hdf5, solution.xdmf (or the .pvd or .xdmf itself)
+  FIELD    point-data arrays of the output (default: s alpha)
   --body   colour only the body with this material id (default 0); the other
            bodies are drawn in light grey
   --warp   displacement magnification (default 1: the true deformed shape)
-  --step   the output step to draw (default: the last one in the .pvd)
+  --step   the output step to draw (default: the last one)
   --out    where to write: PREFIX + FIELD + .png (default: RESULTS/)
-Writes RESULTS/FIELD.png (or PREFIX + FIELD.png). Needs python3-vtk9 and a display: under a headless
-shell, run it through xvfb-run (scripts/run.sh does).
+Writes RESULTS/FIELD.png (or PREFIX + FIELD.png). Needs python3-vtk9 (and
+python3-h5py for HDF5 output) and a display: under a headless shell, run it
+through xvfb-run (scripts/run.sh does).
 """
 import argparse
 import os
@@ -151,18 +153,29 @@ def main():
     parser.add_argument("--step", type=int, default=None)
     parser.add_argument("--out", default=None)
     args = parser.parse_args()
-    pvd = args.results if args.results.endswith(".pvd") else os.path.join(
-        args.results, "solution.pvd")
-    if not os.path.isfile(pvd):
-        sys.exit(f"error: no {pvd} (is Output/Interval > 0?)")
-    pvtu, time = last_output(pvd, args.step)
-    reader = vtk.vtkXMLPUnstructuredGridReader()
-    reader.SetFileName(pvtu)
-    reader.Update()
+    series = args.results
+    if os.path.isdir(series):
+        for name in ("solution.pvd", "solution.xdmf"):
+            if os.path.isfile(os.path.join(series, name)):
+                series = os.path.join(series, name)
+                break
+    if not os.path.isfile(series):
+        sys.exit(f"error: no solution.pvd or solution.xdmf in {args.results} "
+                 "(is Output/Interval > 0?)")
+    if series.endswith(".xdmf"):
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import xdmf_grid
+        grid, time = xdmf_grid.read(series, args.step)
+        reader = xdmf_grid.Source(grid)
+    else:
+        pvtu, time = last_output(series, args.step)
+        reader = vtk.vtkXMLPUnstructuredGridReader()
+        reader.SetFileName(pvtu)
+        reader.Update()
     for field in args.fields:
         render(reader, field, args, time,
                (args.out + field + ".png") if args.out else
-               os.path.join(os.path.dirname(pvd), field + ".png"))
+               os.path.join(os.path.dirname(series), field + ".png"))
 
 
 if __name__ == "__main__":

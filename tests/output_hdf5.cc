@@ -1,4 +1,4 @@
-// Output/Format = hdf5 (issue #27 item 5): parallel HDF5 files with an XDMF
+// Output/Format = hdf5: parallel HDF5 files with an XDMF
 // time series, checked against closed forms (a stronger check than against
 // the .vtu values, which hold the same patches):
 //  1. the unit cube stretched homogeneously by 10 % along x (uniaxial
@@ -8,7 +8,12 @@
 //     (1e-7 of the displacement); the vtu run gives the same reaction
 //     (1e-12); the mesh is written once (one mesh file),
 //     the .xdmf lists the 3 output steps with their times and refers to
-//     files that exist;
+//     files that exist; the cell tensors (six components each in HDF5) are
+//     those of the homogeneous state at every node: log_strain =
+//     diag(ln 1.1, ln(1 + e), ln(1 + e))
+//     with e the lateral contraction, cauchy_stress uniaxial (sigma_yy,
+//     sigma_zz, shears below 1e-5 sigma_xx) with sigma_xx times the current
+//     area = the reaction (1e-5), triaxiality 1/3 (1e-5), plastic_strain 0;
 //  2. two bodies touching (the plate and a block whose bottom nodes sit
 //     on plate nodes): the nodes are not merged: 27 per cell, and every
 //     node of the block's bottom face has a twin of the plate at the same
@@ -109,6 +114,38 @@ subsection Output
                       std::filesystem::exists("stretch_h5/" + (*it)[1].str());
       const double F_h5  = h5_run.at("F1_x").back(),
                    F_vtu = vtu_run.at("F1_x").back();
+      // The tensors (in HDF5 their six components) and triaxiality.
+      const std::string last = "stretch_h5/solution_00002.h5";
+      const auto eta = read_rows(last, "triaxiality");
+      const double e_y = std::log(1. + lo),
+                   s_xx = read_rows(last, "cauchy_stress_xx")[0][0];
+      double worst_strain = 0., worst_stress = 0., worst_eta = 0.,
+             worst_plastic = 0.;
+      for (const auto &[component, strain_value, stress_value] :
+           {std::tuple{"xx", std::log(1.1), s_xx},
+            std::tuple{"yy", e_y, 0.},
+            std::tuple{"zz", e_y, 0.},
+            std::tuple{"xy", 0., 0.},
+            std::tuple{"xz", 0., 0.},
+            std::tuple{"yz", 0., 0.}})
+        {
+          const std::string c = component;
+          const auto strain = read_rows(last, "log_strain_" + c);
+          const auto sigma = read_rows(last, "cauchy_stress_" + c);
+          const auto plastic = read_rows(last, "plastic_strain_" + c);
+          for (std::size_t i = 0; i < strain.size(); ++i)
+            {
+              worst_strain = std::max(worst_strain,
+                                      std::abs(strain[i][0] - strain_value));
+              worst_stress = std::max(worst_stress,
+                                      std::abs(sigma[i][0] - stress_value));
+              worst_plastic = std::max(worst_plastic, std::abs(plastic[i][0]));
+            }
+        }
+      for (const auto &row : eta)
+        worst_eta = std::max(worst_eta, std::abs(row[0] - 1. / 3.));
+      // The reaction on x = 0 against sigma_xx on the current cross-section.
+      const double area = (1. + lo) * (1. + lo);
       out << "u_x = 0.1 x at every node (float precision, 1e-8): "
           << Testing::yes_no(worst_x < 1e-8 && !nodes.empty()) << "\n"
           << "u_y/y = u_z/z, one lateral contraction (1e-6 of it): "
@@ -121,9 +158,25 @@ subsection Output
           << "xdmf times: " << times.size() << " (" << times.front() << " ... "
           << times.back()
           << "), referenced files exist: " << Testing::yes_no(files_exist)
-          << "\n";
+          << "\n"
+          << "log_strain = diag(ln 1.1, ln(1 + e), ln(1 + e)) at every node "
+             "(1e-6): "
+          << Testing::yes_no(worst_strain < 1e-6 && !eta.empty()) << "\n"
+          << "cauchy_stress uniaxial (1e-5 sigma_xx), sigma_xx x current area "
+             "= the reaction (1e-5): "
+          << Testing::yes_no(worst_stress < 1e-5 * std::abs(s_xx) &&
+                             std::abs(std::abs(s_xx) * area - std::abs(F_h5)) <
+                               1e-5 * std::abs(F_h5))
+          << "\n"
+          << "triaxiality 1/3 (1e-5), plastic_strain 0: "
+          << Testing::yes_no(worst_eta < 1e-5 && worst_plastic == 0.) << "\n"
+          << "sigma_xx = " << std::setprecision(5) << s_xx << " Pa\n";
       std::cout << "worst u_x " << worst_x << ", lateral " << lo << " .. " << hi
-                << ", F1_x " << F_h5 << " / " << F_vtu << std::endl;
+                << ", F1_x " << F_h5 << " / " << F_vtu << "; tensors: strain "
+                << worst_strain << ", stress " << worst_stress << ", eta "
+                << worst_eta << ", |sigma_xx| A - |F| "
+                << std::abs(s_xx) * area - std::abs(F_h5)
+                << std::endl;
     }
 
   // 2. Two touching bodies: no merged nodes.

@@ -60,7 +60,8 @@ namespace DuctileContact
       }
     statistics.add("energy_residual",
                    external_work - committed.stored_energy - plastic_work +
-                     plastic_energy_released - committed.fracture_energy -
+                     plastic_energy_released -
+                     (committed.fracture_energy - initial_fracture_energy) -
                      fracture_viscous_work - contact_dissipation);
   }
 } // namespace DuctileContact

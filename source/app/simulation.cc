@@ -12,6 +12,7 @@
 #include <ductile_contact/coupled/coupled_problem.h>
 #include <ductile_contact/coupled/coupled_solver.h>
 #include <ductile_contact/output/progress_line.h>
+#include <ductile_contact/phase_field/initial_crack.h>
 #include <ductile_contact/output/solution_writer.h>
 #include <ductile_contact/solver/linear_solver.h>
 #include <ductile_contact/solver/newton_solver.h>
@@ -342,6 +343,14 @@ namespace DuctileContact
       {
         statistics.add("max_s", max_phase_field);
         statistics.add("min_s_change", min_phase_field_change);
+        statistics.add("crack_area", committed.crack_area);
+        statistics.add("cracked_volume", committed.cracked_volume);
+        const char *xyz[] = {"x", "y", "z"};
+        for (const auto &[name, box] :
+             {std::pair{"cracked_min_", committed.cracked_min},
+              std::pair{"cracked_max_", committed.cracked_max}})
+          for (unsigned int d = 0; d < dim; ++d)
+            statistics.add(name + std::string(xyz[d]), box[d]);
       }
   }
 
@@ -452,7 +461,10 @@ namespace DuctileContact
     TimerOutput::Scope scope(timer, "output");
     writer->write(step, t, u_ghosted, cell_quantities);
     if (contact)
-      contact->write_output(parameters.output.directory, step, t);
+      contact->write_output(parameters.output.directory,
+                            parameters.output.format,
+                            step,
+                            t);
   }
 
 
@@ -484,10 +496,27 @@ namespace DuctileContact
   void
   Simulation::start()
   {
-    u            = 0;
+    u = 0;
+    if (set_initial_crack(*discretisation, parameters.bodies, u))
+      {
+        // The initial crack relaxed at zero load: the minimiser of the
+        // crack functional with s at least the given one (the bound
+        // s >= s_n), the state the run starts from and whose energy is the
+        // zero of the energy account.
+        old_solution = u;
+        const StepReport report = solver->solve_step(
+          {0., parameters.load_stepping.time_step, &old_solution, &history}, u);
+        if (!report.converged)
+          throw InputError("the initial crack of Fracture/Initial crack "
+                           "cannot be relaxed at zero load (" +
+                           report.failure + ")");
+        pcout << "Initial crack relaxed at zero load in "
+              << report.iterations << " Newton iterations" << std::endl;
+      }
     old_solution = u;
     committed =
       commit({0., parameters.load_stepping.time_step, &old_solution, &history});
+    energy.start(committed);
     record_step(0, 0., 0., StepReport(), 0);
     if (parameters.output.interval > 0)
       write_output(0, 0.);

@@ -17,111 +17,6 @@ namespace DuctileContact
 {
   using namespace dealii;
 
-  void
-  AssemblyReduction::add(const AssemblyReduction &o)
-  {
-    stored_energy += o.stored_energy;
-    hardening_energy += o.hardening_energy;
-    fracture_energy += o.fracture_energy;
-    plastic_work_increment += o.plastic_work_increment;
-    fracture_viscous_work_increment += o.fracture_viscous_work_increment;
-    history_work_increment += o.history_work_increment;
-    plastic_energy_release_increment += o.plastic_energy_release_increment;
-    min_plastic_dissipation =
-      std::min(min_plastic_dissipation, o.min_plastic_dissipation);
-    min_alpha = std::min(min_alpha, o.min_alpha);
-    for (unsigned int b = 0; b < Block::n_blocks; ++b)
-      {
-        magnitude_squared[b] += o.magnitude_squared[b];
-        scale_squared[b] += o.scale_squared[b];
-      }
-    if (o.min_J < min_J)
-      {
-        min_J      = o.min_J;
-        min_J_site = o.min_J_site;
-      }
-    if (o.non_finite && !non_finite)
-      {
-        non_finite      = true;
-        non_finite_site = o.non_finite_site;
-      }
-    max_alpha = std::max(max_alpha, o.max_alpha);
-    min_yielding_alpha_increment =
-      std::min(min_yielding_alpha_increment, o.min_yielding_alpha_increment);
-    inverted = inverted || o.inverted;
-    switch_flips += o.switch_flips;
-  }
-
-
-
-  AssemblyInfo
-  AssemblyReduction::sum_over_ranks(const MPI_Comm comm) const
-  {
-    AssemblyInfo info;
-    info.inverted = Utilities::MPI::max(inverted ? 1 : 0, comm) > 0;
-    // The site of the smallest J and of the first non-finite row, from the
-    // rank that has it.
-    const auto min_J_rank = Utilities::MPI::min_max_avg(min_J, comm).min_index;
-    info.min_J            = Utilities::MPI::min(min_J, comm);
-    info.min_J_site.position =
-      Utilities::MPI::broadcast(comm, min_J_site.position, min_J_rank);
-    info.min_J_site.body =
-      Utilities::MPI::broadcast(comm, min_J_site.body, min_J_rank);
-    const unsigned int this_rank = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int first_non_finite = Utilities::MPI::min(
-      non_finite ? this_rank : numbers::invalid_unsigned_int, comm);
-    info.non_finite = first_non_finite != numbers::invalid_unsigned_int;
-    if (info.non_finite)
-      {
-        info.non_finite_site.position =
-          Utilities::MPI::broadcast(comm,
-                                    non_finite_site.position,
-                                    first_non_finite);
-        info.non_finite_site.body =
-          Utilities::MPI::broadcast(comm,
-                                    non_finite_site.body,
-                                    first_non_finite);
-      }
-    info.max_alpha = Utilities::MPI::max(max_alpha, comm);
-    info.min_alpha = Utilities::MPI::min(min_alpha, comm);
-    info.min_plastic_dissipation =
-      Utilities::MPI::min(min_plastic_dissipation, comm);
-    info.min_yielding_alpha_increment =
-      Utilities::MPI::min(min_yielding_alpha_increment, comm);
-    info.switch_flips = Utilities::MPI::sum(switch_flips, comm);
-    std::vector<double> sums{stored_energy,
-                             hardening_energy,
-                             fracture_energy,
-                             plastic_work_increment,
-                             fracture_viscous_work_increment,
-                             history_work_increment,
-                             plastic_energy_release_increment};
-    for (unsigned int b = 0; b < Block::n_blocks; ++b)
-      {
-        sums.push_back(magnitude_squared[b]);
-        sums.push_back(scale_squared[b]);
-      }
-    Utilities::MPI::sum(sums, comm, sums);
-    info.stored_energy                   = sums[0];
-    info.hardening_energy                = sums[1];
-    info.fracture_energy                 = sums[2];
-    info.plastic_work_increment          = sums[3];
-    info.fracture_viscous_work_increment = sums[4];
-    info.history_work_increment          = sums[5];
-    info.plastic_energy_release_increment = sums[6];
-    for (unsigned int b = 0; b < Block::n_blocks; ++b)
-      {
-        info.residual_magnitude[b] = std::sqrt(sums[7 + 2 * b]);
-        info.residual_scale[b]     = std::sqrt(sums[8 + 2 * b]);
-      }
-    // The scale of the u rows is the size of their terms.
-    info.force_magnitude = info.residual_magnitude[Block::displacement];
-    info.residual_scale[Block::displacement] = info.force_magnitude;
-    return info;
-  }
-
-
-
   namespace
   {
     /// The crack driver of (51) at point @p q: psi_H = max(psi_D, H_n)
@@ -467,6 +362,7 @@ namespace DuctileContact
       rows.blocks.reinit(dofs, n_q);
 
     double volume = 0, vm = 0, mean = 0, mean_J = 0, driver_sum = 0;
+    SymmetricTensor<2, dim> tau_sum, sigma_sum, b_sum, Cp_sum;
     for (unsigned int q = 0; q < n_q; ++q)
       {
         const Tensor<2, dim> F =
@@ -482,8 +378,17 @@ namespace DuctileContact
         sums.stored_energy += m.psi_elastic * JxW;
         volume += JxW;
         vm += von_mises(m.tau) * JxW;
+        if (has_s && scratch.s[q] >= cracked_threshold)
+          sums.note_cracked(fe_values.quadrature_point(q), JxW);
         mean += trace(m.tau) / 3. * JxW;
         mean_J += m.J * JxW;
+        if (pass.averages)
+          {
+            tau_sum += JxW * m.tau;
+            sigma_sum += (JxW / m.J) * m.tau;
+            b_sum += JxW * symmetrize(F * transpose(F));
+            Cp_sum += JxW * invert(m.updated.Cp_inv);
+          }
         if (pass.averages && !pass.updated_history)
           {
             // Only the cell averages: the crack driver, no rows.
@@ -563,6 +468,10 @@ namespace DuctileContact
             copy.mean_stress         = mean / volume;
             copy.mean_J              = mean_J / volume;
             copy.crack_driving_force = driver_sum / volume;
+            copy.kirchhoff           = tau_sum / volume;
+            copy.cauchy              = sigma_sum / volume;
+            copy.b                   = b_sum / volume;
+            copy.Cp                  = Cp_sum / volume;
           }
         if (!pass.updated_history)
           return;
@@ -583,8 +492,9 @@ namespace DuctileContact
     CellCopy                                    &copy,
     const Pass                                  &pass) const
   {
-    LocalRows &rows  = copy.cell;
-    const bool has_s = !dofs.s.empty();
+    LocalRows   &rows          = copy.cell;
+    const bool   has_s         = !dofs.s.empty();
+    const double energy_before = copy.sums.fracture_energy;
     if (has_s)
       {
         scratch.cell_values.reinit(rows.f_int.size());
@@ -611,7 +521,11 @@ namespace DuctileContact
             break;
           }
     if (has_s)
-      face_terms(cell, scratch, copy, pass);
+      {
+        face_terms(cell, scratch, copy, pass);
+        copy.sums.crack_area += (copy.sums.fracture_energy - energy_before) /
+                                body.crack.critical_energy_release_rate;
+      }
   }
 
 

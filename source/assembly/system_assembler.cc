@@ -87,6 +87,12 @@ namespace DuctileContact
                     &quantities.J,
                     &quantities.crack_driving_force})
       v->reinit(discretisation.triangulation.n_active_cells());
+    for (auto *v : {&quantities.kirchhoff,
+                    &quantities.cauchy,
+                    &quantities.b,
+                    &quantities.Cp})
+      v->assign(discretisation.triangulation.n_active_cells(),
+                SymmetricTensor<2, dim>());
   }
 
 
@@ -171,6 +177,10 @@ namespace DuctileContact
           quantities->mean_stress[i]         = copy.mean_stress;
           quantities->J[i]                   = copy.mean_J;
           quantities->crack_driving_force[i] = copy.crack_driving_force;
+          quantities->kirchhoff[i]           = copy.kirchhoff;
+          quantities->cauchy[i]              = copy.cauchy;
+          quantities->b[i]                   = copy.b;
+          quantities->Cp[i]                  = copy.Cp;
         }
     };
     const auto    &dof_handler = discretisation.dof_handler;

@@ -864,12 +864,10 @@ namespace DuctileContact
 
   void
   ContactProblem::write_output(const std::string &directory,
+                               const OutputFormat format,
                                const unsigned int step,
                                const double       time)
   {
-    if (Utilities::MPI::this_mpi_process(
-          discretisation.dof_handler.get_communicator()) != 0)
-      return;
     for (unsigned int p = 0; p < data.size(); ++p)
       {
         const Pair      &pair = data[p];
@@ -883,6 +881,7 @@ namespace DuctileContact
             nodal.active.push_back(pair.nodal[j].active);
             nodal.slip.push_back(pair.nodal[j].slip);
             nodal.traction.push_back(pair.nodal[j].traction);
+            nodal.friction_state.push_back(pair.nodal[j].friction_state);
             nodal.gap.push_back(a.area > 0. ? pair.nodal[j].gap / a.area : 0.);
           }
         // Before the first assembly (step 0) nothing is computed yet.
@@ -892,12 +891,15 @@ namespace DuctileContact
         nodal.slip.resize(n);
         nodal.traction.resize(n);
         nodal.active.resize(n, false);
+        nodal.friction_state.resize(n, 0);
         nodal.gap.resize(n, 0.);
         write_contact_surface(nodal,
                               directory,
                               "contact" + std::to_string(pairs[p].number),
                               step,
                               time,
+                              format,
+                              discretisation.dof_handler.get_communicator(),
                               output_records[p]);
       }
   }

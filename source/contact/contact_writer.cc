@@ -1,3 +1,6 @@
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+
 #include <ductile_contact/contact/contact_writer.h>
 
 #include <fstream>
@@ -6,21 +9,105 @@
 
 namespace DuctileContact
 {
-  void
-  write_contact_surface(const ContactNodalData                      &data,
-                        const std::string                           &directory,
-                        const std::string                           &name,
-                        const unsigned int                           step,
-                        const double                                 time,
-                        std::vector<std::pair<double, std::string>> &records)
-  {
-    const ContactSurface &surface = *data.surface;
-    std::ostringstream    number;
-    number << std::setw(5) << std::setfill('0') << step;
-    const std::string base = name + "_" + number.str();
+  using namespace dealii;
 
+  namespace
+  {
+    /// The scalar and vector fields of the surface output, in the order
+    /// of their rows in a patch.
+    const std::vector<std::string> field_names = {
+      "pressure", "gap", "active", "friction_state",
+      "normal",   "normal", "normal",
+      "slip",     "slip",   "slip",
+      "traction", "traction", "traction"};
+
+    /**
+     * A slave surface as DataOut patches: each quad9 face a patch with two
+     * subdivisions whose nine points are its nodes (quad9 order is the
+     * lexicographic order of a patch's points), at their current
+     * positions, so that DataOutInterface writes it in parallel as vtu or
+     * HDF5.
+     */
+    class SurfacePatches : public DataOutInterface<2, dim>
     {
-      std::ofstream table(directory + "/" + base + ".txt");
+    public:
+      SurfacePatches(const ContactNodalData &data, const MPI_Comm comm)
+      {
+        const ContactSurface &surface = *data.surface;
+        const unsigned int    rank    = Utilities::MPI::this_mpi_process(comm);
+        const unsigned int    ranks = Utilities::MPI::n_mpi_processes(comm);
+        // deal.II's vertex order of a quadrilateral, in quad9 numbering.
+        constexpr unsigned int corners[4] = {0, 2, 6, 8};
+        for (unsigned int f = rank; f < surface.faces.size(); f += ranks)
+          {
+            const auto                  &face = surface.faces[f];
+            DataOutBase::Patch<2, dim> patch;
+            patch.n_subdivisions = 2;
+            patch.reference_cell = ReferenceCells::Quadrilateral;
+            for (unsigned int v = 0; v < 4; ++v)
+              patch.vertices[v] = surface.nodes[face.nodes[corners[v]]].current;
+            patch.points_are_available = true;
+            patch.data.reinit(field_names.size() + dim, 9);
+            for (unsigned int k = 0; k < 9; ++k)
+              {
+                const unsigned int j   = face.nodes[k];
+                unsigned int       row = 0;
+                for (const double v :
+                     {data.pressure[j],
+                      data.gap[j],
+                      data.active[j] ? 1. : 0.,
+                      static_cast<double>(data.friction_state[j])})
+                  patch.data(row++, k) = v;
+                for (const auto *vector :
+                     {&data.normal[j], &data.slip[j], &data.traction[j]})
+                  for (unsigned int d = 0; d < dim; ++d)
+                    patch.data(row++, k) = (*vector)[d];
+                for (unsigned int d = 0; d < dim; ++d)
+                  patch.data(row++, k) = surface.nodes[j].current[d];
+              }
+            patch.patch_index = patches.size();
+            patches.push_back(patch);
+          }
+      }
+
+    private:
+      const std::vector<DataOutBase::Patch<2, dim>> &
+      get_patches() const override
+      {
+        return patches;
+      }
+
+      std::vector<std::string>
+      get_dataset_names() const override
+      {
+        return field_names;
+      }
+
+      std::vector<
+        std::tuple<unsigned int,
+                   unsigned int,
+                   std::string,
+                   DataComponentInterpretation::DataComponentInterpretation>>
+      get_nonscalar_data_ranges() const override
+      {
+        const auto vector =
+          DataComponentInterpretation::component_is_part_of_vector;
+        return {{4, 6, "normal", vector},
+                {7, 9, "slip", vector},
+                {10, 12, "traction", vector}};
+      }
+
+      std::vector<DataOutBase::Patch<2, dim>> patches;
+    };
+
+
+
+    /// The node table for scripts (rank 0).
+    void
+    write_table(const ContactNodalData &data, const std::string &file)
+    {
+      const ContactSurface &surface = *data.surface;
+      std::ofstream         table(file);
       table << "X Y Z x y z pressure gap active slip_x slip_y slip_z "
                "traction_x traction_y traction_z\n"
             << std::setprecision(12);
@@ -32,69 +119,61 @@ namespace DuctileContact
                 << data.slip[j] << ' ' << data.traction[j] << '\n';
         }
     }
+  } // namespace
 
-    {
-      // VTK_BIQUADRATIC_QUAD: corners, edge mid-points, centre.
-      constexpr unsigned int vtk_order[9] = {0, 2, 8, 6, 1, 5, 7, 3, 4};
-      std::ofstream          vtu(directory + "/" + base + ".vtu");
-      vtu << std::setprecision(10);
-      vtu << "<?xml version=\"1.0\"?>\n"
-          << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
-          << "<UnstructuredGrid>\n<Piece NumberOfPoints=\""
-          << surface.nodes.size() << "\" NumberOfCells=\""
-          << surface.faces.size() << "\">\n"
-          << "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" "
-             "format=\"ascii\">\n";
-      for (const auto &n : surface.nodes)
-        vtu << n.current << '\n';
-      vtu << "</DataArray></Points>\n<Cells>\n"
-          << "<DataArray type=\"Int64\" Name=\"connectivity\" "
-             "format=\"ascii\">\n";
-      for (const auto &f : surface.faces)
-        {
-          for (const unsigned int i : vtk_order)
-            vtu << f.nodes[i] << ' ';
-          vtu << '\n';
-        }
-      vtu << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
-             "format=\"ascii\">\n";
-      for (unsigned int f = 1; f <= surface.faces.size(); ++f)
-        vtu << 9 * f << ' ';
-      vtu << "\n</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
-             "format=\"ascii\">\n";
-      for (unsigned int f = 0; f < surface.faces.size(); ++f)
-        vtu << "28 ";
-      vtu << "\n</DataArray>\n</Cells>\n<PointData>\n";
-      const auto scalar = [&](const char *field, const auto &values) {
-        vtu << "<DataArray type=\"Float64\" Name=\"" << field
-            << "\" format=\"ascii\">\n";
-        for (const auto v : values)
-          vtu << static_cast<double>(v) << ' ';
-        vtu << "\n</DataArray>\n";
-      };
-      scalar("pressure", data.pressure);
-      scalar("gap", data.gap);
-      scalar("active", data.active);
-      const auto vector = [&](const char *field, const auto &values) {
-        vtu << "<DataArray type=\"Float64\" Name=\"" << field
-            << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-        for (const auto &v : values)
-          vtu << v << '\n';
-        vtu << "</DataArray>\n";
-      };
-      vector("normal", data.normal);
-      vector("slip", data.slip);
-      vector("traction", data.traction);
-      vtu << "</PointData>\n</Piece>\n</UnstructuredGrid>\n"
-          << "</VTKFile>\n";
-    }
 
-    records.emplace_back(time, base + ".vtu");
-    std::ofstream pvd(directory + "/" + name + ".pvd");
-    pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
-           "version=\"0.1\">\n<Collection>\n";
-    for (const auto &[t, file] : records)
-      pvd << "<DataSet timestep=\"" << t << "\" file=\"" << file << "\"/>\n";
-    pvd << "</Collection>\n</VTKFile>\n";
+
+  void
+  write_contact_surface(const ContactNodalData                      &data,
+                        const std::string                           &directory,
+                        const std::string                           &name,
+                        const unsigned int                           step,
+                        const double                                 time,
+                        const OutputFormat                           format,
+                        const MPI_Comm                               comm,
+                        std::vector<std::pair<double, std::string>> &records)
+  {
+    const bool        root = Utilities::MPI::this_mpi_process(comm) == 0;
+    const std::string base = name + "_" + Utilities::int_to_string(step, 5);
+    if (root)
+      write_table(data, directory + "/" + base + ".txt");
+
+    const SurfacePatches surface(data, comm);
+    if (format == OutputFormat::vtu)
+      {
+        records.emplace_back(time,
+                             surface.write_vtu_with_pvtu_record(
+                               directory + "/", name, step, comm, 5));
+        if (root)
+          {
+            std::ofstream pvd(directory + "/" + name + ".pvd");
+            DataOutBase::write_pvd_record(pvd, records);
+          }
+        return;
+      }
+
+    // hdf5: mesh and fields of the step in one file (the surface moves);
+    // the series written by hand from the steps' grids, which the
+    // records keep (checkpoints carry them as text).
+    DataOutBase::DataOutFilter filter(
+      DataOutBase::DataOutFilterFlags(/*filter_duplicate_vertices=*/false,
+                                      /*xdmf_hdf5_output=*/true));
+    surface.write_filtered_data(filter);
+    const std::string h5 = base + ".h5";
+    surface.write_hdf5_parallel(filter, directory + "/" + h5, comm);
+    const XDMFEntry entry = surface.create_xdmf_entry(filter, h5, time, comm);
+    records.emplace_back(time, entry.get_xdmf_content(3));
+    if (root)
+      {
+        std::ofstream xdmf(directory + "/" + name + ".xdmf");
+        xdmf << "<?xml version=\"1.0\" ?>\n"
+             << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+             << "<Xdmf Version=\"2.0\">\n  <Domain>\n"
+             << "    <Grid Name=\"CellTime\" GridType=\"Collection\" "
+                "CollectionType=\"Temporal\">\n";
+        for (const auto &record : records)
+          xdmf << record.second;
+        xdmf << "    </Grid>\n  </Domain>\n</Xdmf>\n";
+      }
   }
 } // namespace DuctileContact

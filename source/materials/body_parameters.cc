@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <ductile_contact/core/expression.h>
 #include <ductile_contact/core/input_error.h>
 #include <ductile_contact/materials/body_parameters.h>
 
@@ -206,6 +207,17 @@ namespace DuctileContact
                       "only; it must stay 1 with elastic and plastic "
                       "energy.",
                       Patterns::Double(0.));
+    prm.add_parameter(
+      "Initial crack",
+      crack.initial_crack,
+      "A crack present from the start, without meshing a slit: s at t = 0 "
+      "as an expression of the reference coordinates x, y, z [m] (muparser "
+      "syntax, clipped to [0, 1]; taken at the nodes of s), e.g. 'abs(y - "
+      "0.5e-3) < 1e-9 && x <= 0.5e-3' for the nodes on a segment of the "
+      "plane y = 0.5 mm, or '(x < 1e-3) * exp(-abs(y) / 1e-5)' for a "
+      "profile. The bound s >= s_n of Coupling/Irreversibility keeps it. "
+      "Empty: none.",
+      Patterns::Anything());
     prm.leave_subsection();
   }
 
@@ -272,6 +284,14 @@ namespace DuctileContact
                     "'elastic' is the only driver of a body without "
                     "plasticity (set Plasticity = true for the plastic "
                     "drivers)");
+        const std::string error =
+          crack.initial_crack.empty() ?
+            "" :
+            expression_error(crack.initial_crack, "x,y,z");
+        check_input(error.empty(),
+                    f + "Initial crack",
+                    crack.initial_crack,
+                    "it is not an expression of x, y, z: " + error);
         check_input(crack.driver != CrackDriverType::elastic_plastic_energy ||
                       crack.work_driver.factor == 1.,
                     f + "Driver factor",

@@ -1,16 +1,55 @@
 #include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_dgq.h>
+#include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/la_parallel_block_vector.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <ductile_contact/materials/neo_hooke.h>
 #include <ductile_contact/output/solution_writer.h>
 
+#include <array>
+#include <cmath>
 #include <fstream>
 
 namespace DuctileContact
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// ln(A) of a symmetric positive definite A, through its eigenvalues;
+    /// zero for a cell without averages (A = 0).
+    SymmetricTensor<2, dim>
+    logarithm(const SymmetricTensor<2, dim> &A)
+    {
+      SymmetricTensor<2, dim> log_A;
+      if (!(determinant(A) > 0.))
+        return log_A;
+      for (const auto &[value, vector] : eigenvectors(A))
+        log_A += std::log(value) * symmetrize(outer_product(vector, vector));
+      return log_A;
+    }
+
+    /// The names of the tensor fields of the output, in the order of
+    /// tensor_fields().
+    const std::array<std::string, 4> tensor_names = {
+      {"kirchhoff_stress", "cauchy_stress", "log_strain", "plastic_strain"}};
+
+    /// A cell's tensor fields: the averaged Kirchhoff and Cauchy stress
+    /// [Pa], the logarithmic strain 1/2 ln(b) and the plastic strain
+    /// 1/2 ln(C^p) of the averaged b and C^p.
+    std::array<SymmetricTensor<2, dim>, 4>
+    tensor_fields(const CellQuantities &cells, const unsigned int i)
+    {
+      return {{cells.kirchhoff[i],
+               cells.cauchy[i],
+               0.5 * logarithm(cells.b[i]),
+               0.5 * logarithm(cells.Cp[i])}};
+    }
+  } // namespace
 
   SolutionWriter::SolutionWriter(
     const std::string                                          &directory,
@@ -87,6 +126,62 @@ namespace DuctileContact
                                "crack_driving_force");
     data_out.add_data_vector(body, "body");
     data_out.add_data_vector(rank, "mpi_rank");
+
+    // The tensor fields as piecewise constant (DG0) fields: in vtu as
+    // tensors (ParaView shows each as one), in HDF5, whose writer keeps
+    // three components of a non-scalar field, as the six scalars
+    // NAME_xx, NAME_yy, NAME_zz, NAME_xy, NAME_xz, NAME_yz; the stress
+    // triaxiality sigma_m / sigma_eq of the averaged Cauchy stress as cell
+    // data.
+    const bool         as_tensor = format == OutputFormat::vtu;
+    const unsigned int n_per =
+      as_tensor ? dim * dim
+                : SymmetricTensor<2, dim>::n_independent_components;
+    const unsigned int n_tensor = tensor_names.size() * n_per;
+    FESystem<dim>      fe_tensor(FE_DGQ<dim>(0), n_tensor);
+    DoFHandler<dim>    tensor_dofs(tria);
+    tensor_dofs.distribute_dofs(fe_tensor);
+    LinearAlgebra::distributed::Vector<double> tensors(
+      tensor_dofs.locally_owned_dofs(),
+      DoFTools::extract_locally_relevant_dofs(tensor_dofs),
+      tria.get_communicator());
+    Vector<float> triaxiality(tria.n_active_cells());
+    std::vector<types::global_dof_index> indices(n_tensor);
+    for (const auto &cell : tensor_dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int i = cell->active_cell_index();
+          cell->get_dof_indices(indices);
+          const auto fields = tensor_fields(cells, i);
+          for (unsigned int k = 0; k < fields.size(); ++k)
+            for (unsigned int c = 0; c < n_per; ++c)
+              tensors[indices[k * n_per + c]] =
+                as_tensor ? fields[k][c / dim][c % dim] :
+                            fields[k].access_raw_entry(c);
+          const double equivalent = von_mises(cells.cauchy[i]);
+          triaxiality[i] =
+            equivalent > 0. ? trace(cells.cauchy[i]) / 3. / equivalent : 0.;
+        }
+    tensors.update_ghost_values();
+    std::vector<std::string> tensor_component_names;
+    const char              *xyz = "xyz";
+    for (const std::string &name : tensor_names)
+      for (unsigned int c = 0; c < n_per; ++c)
+        {
+          const auto ab =
+            SymmetricTensor<2, dim>::unrolled_to_component_indices(c);
+          tensor_component_names.push_back(
+            as_tensor ? name : name + "_" + xyz[ab[0]] + xyz[ab[1]]);
+        }
+    data_out.add_data_vector(
+      tensor_dofs,
+      tensors,
+      tensor_component_names,
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+        n_tensor,
+        as_tensor ? DataComponentInterpretation::component_is_part_of_tensor :
+                    DataComponentInterpretation::component_is_scalar));
+    data_out.add_data_vector(triaxiality, "triaxiality");
     data_out.build_patches(discretisation.degree);
 
     const MPI_Comm comm = tria.get_communicator();

@@ -24,11 +24,20 @@ namespace DuctileContact
    * with D_c the frictional dissipation (47) of the contact pairs, R_p the
    * plastic energy the crack has released (0 unless the plastic energy is
    * degraded, Crack driver = elastic and plastic energy) and D_p = W_p -
-   * Psi^p - R_p the plastic dissipation. All in [J].
+   * Psi^p - R_p the plastic dissipation. All in [J]. The crack energy
+   * enters as its change since the start (an initial crack's own energy is
+   * not work done on the solid).
    */
   class EnergyAccount
   {
   public:
+    /// The state at t = 0 (its crack energy is the zero of the account).
+    void
+    start(const AssemblyInfo &initial)
+    {
+      initial_fracture_energy = initial.fracture_energy;
+    }
+
     /// Adds an accepted step: internal force @p force at its end, the
     /// increment @p increment of the solution and the commit's @p committed.
     void
@@ -62,7 +71,7 @@ namespace DuctileContact
     serialize(Archive &ar, const unsigned int)
     {
       ar &external_work &plastic_work &fracture_viscous_work
-        &history_driving_work &plastic_energy_released;
+        &history_driving_work &plastic_energy_released &initial_fracture_energy;
     }
 
   private:
@@ -72,5 +81,6 @@ namespace DuctileContact
     double                                     fracture_viscous_work = 0.;
     double                                     history_driving_work  = 0.;
     double plastic_energy_released = 0.;
+    double initial_fracture_energy = 0.;
   };
 } // namespace DuctileContact

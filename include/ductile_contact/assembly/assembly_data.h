@@ -1,6 +1,8 @@
 #pragma once
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/vector.h>
@@ -80,6 +82,15 @@ namespace DuctileContact
     double min_plastic_dissipation = std::numeric_limits<double>::max();
     /// Smallest alpha at a quadrature point (+max if none).
     double min_alpha = std::numeric_limits<double>::max();
+    /// Crack measures of the pass (commit: of the accepted state): the
+    /// regularised crack area Gamma_l(s) = int gamma(s, grad s, Hess s) dV
+    /// [m^2] (the fracture energy over g_c, body by body), the volume where
+    /// s >= cracked_threshold at the quadrature points [m^3], and the
+    /// bounding box of those points in the reference configuration [m]
+    /// (the crack tip of a through-crack is its far end; zero if none).
+    double           crack_area     = 0.;
+    double           cracked_volume = 0.;
+    dealii::Point<dim> cracked_min, cracked_max;
     /// Largest alpha at a quadrature point, and the smallest alpha -
     /// alpha_n over the yielding ones (chi_p = 1; +inf if none yields): a
     /// negative value is plastic flow reversed by the gradient term.
@@ -121,6 +132,10 @@ namespace DuctileContact
     double plastic_energy_release_increment = 0.;
     double min_plastic_dissipation = std::numeric_limits<double>::max();
     double min_alpha               = std::numeric_limits<double>::max();
+    double crack_area              = 0.;
+    double cracked_volume          = 0.;
+    /// The box of the cracked points (meaningful where cracked_volume > 0).
+    dealii::Point<dim> cracked_min, cracked_max;
     /// Sums of squares of the cell magnitudes and scales per block (the
     /// scale of u is its magnitude).
     std::array<double, Block::n_blocks> magnitude_squared{{0., 0., 0.}};
@@ -144,6 +159,18 @@ namespace DuctileContact
         inverted = true;
     }
 
+    /// A quadrature point at @p p with weight @p JxW has s >= the threshold.
+    void
+    note_cracked(const dealii::Point<dim> &p, const double JxW)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          cracked_min[d] = cracked_volume > 0. ? std::min(cracked_min[d], p[d]) : p[d];
+          cracked_max[d] = cracked_volume > 0. ? std::max(cracked_max[d], p[d]) : p[d];
+        }
+      cracked_volume += JxW;
+    }
+
     void
     add(const AssemblyReduction &other);
 
@@ -151,10 +178,18 @@ namespace DuctileContact
     sum_over_ranks(const MPI_Comm comm) const;
   };
 
-  /// Cell averages for graphical output, indexed by active cell index.
+  /// A point counts as cracked where s is at least this (crack measures).
+  constexpr double cracked_threshold = 0.95;
+
+  /// Cell averages for graphical output, indexed by active cell index:
+  /// von Mises and mean Kirchhoff stress, J, the crack driving force, and
+  /// the averages of the Kirchhoff stress tau, the Cauchy stress tau / J,
+  /// the left Cauchy-Green tensor b = F F^T and C^p = F^pT F^p (the
+  /// identity in elastic bodies), from which the output takes the strains.
   struct CellQuantities
   {
     dealii::Vector<float> von_mises, mean_stress, J, crack_driving_force;
+    std::vector<dealii::SymmetricTensor<2, dim>> kirchhoff, cauchy, b, Cp;
   };
 
   /**

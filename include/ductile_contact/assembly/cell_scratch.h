@@ -18,7 +18,7 @@ namespace DuctileContact
   /**
    * Scratch of one cell: evaluation objects and the solution at the
    * quadrature points. Elastic cells need gradients only; cells with alpha
-   * or s also values; hessians (for the bi-Laplacian) only the one-off
+   * or s also values and the points (crack measures); hessians (for the bi-Laplacian) only the one-off
    * crack functional matrices of a mesh. A copy builds
    * its own evaluation objects (one per thread).
    */
@@ -34,6 +34,7 @@ namespace DuctileContact
                          discretisation.fe_collection,
                          discretisation.quadrature,
                          dealii::update_values | dealii::update_gradients |
+                           dealii::update_quadrature_points |
                            dealii::update_JxW_values)
         , crack_values(discretisation.mapping,
                        discretisation.fe_collection,
@@ -99,6 +100,7 @@ namespace DuctileContact
     bool                   has_averages = false;
     unsigned int           cell_index   = 0;
     float von_mises = 0, mean_stress = 0, mean_J = 0, crack_driving_force = 0;
+    dealii::SymmetricTensor<2, dim> kirchhoff, cauchy, b, Cp;
   };
 
 } // namespace DuctileContact

@@ -11,6 +11,7 @@
 #include <ductile_contact/contact/contact_parameters.h>
 #include <ductile_contact/contact/contact_surface.h>
 #include <ductile_contact/contact/mortar_operators.h>
+#include <ductile_contact/output/output_parameters.h>
 #include <ductile_contact/contact/nodal_complementarity.h>
 #include <ductile_contact/contact/nodal_contact.h>
 #include <ductile_contact/materials/body_parameters.h>
@@ -172,9 +173,11 @@ namespace DuctileContact
     commit();
 
     /// Writes the slave surfaces with pressure and gap of the last
-    /// assembly (contact_writer.h; rank 0 writes, the data are replicated).
+    /// assembly in @p format (contact_writer.h; collective, every rank
+    /// writes its share of the replicated surfaces).
     void
     write_output(const std::string &directory,
+                 const OutputFormat format,
                  const unsigned int step,
                  const double       time);
 

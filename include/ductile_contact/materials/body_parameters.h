@@ -35,6 +35,9 @@ namespace DuctileContact
     CrackDriverType driver = CrackDriverType::elastic;
     /// w_c and zeta of the elastic-plus-plastic driver.
     PlasticWorkDriver work_driver;
+    /// s at the start as an expression of the reference coordinates x, y,
+    /// z [m], clipped to [0, 1] (set_initial_crack()); empty: none.
+    std::string initial_crack;
   };
 
   /**

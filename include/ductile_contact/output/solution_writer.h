@@ -30,7 +30,13 @@ namespace DuctileContact
    * (for Warp By Vector), alpha, s. Cell data (averages over the quadrature
    * points, from SystemAssembler's CellQuantities): von Mises equivalent and
    * mean of the Kirchhoff stress [Pa], J, the crack driving force H =
-   * -g'(s) psi^+_H [Pa], body (material id) and MPI rank.
+   * -g'(s) psi^+_H [Pa], the stress triaxiality sigma_m / sigma_eq of the
+   * averaged Cauchy stress, body (material id) and MPI rank; and piecewise
+   * constant (in vtu 3 x 3 tensors, in HDF5 the six components NAME_xx,
+   * _yy, _zz, _xy, _xz, _yz): kirchhoff_stress tau and
+   * cauchy_stress sigma = tau / J [Pa], log_strain 1/2 ln(b) of the averaged
+   * b = F F^T and plastic_strain 1/2 ln(C^p) of the averaged C^p = F^pT F^p
+   * (zero in elastic bodies).
    */
   class SolutionWriter
   {
