@@ -188,7 +188,11 @@ namespace DuctileContact
     if (coupling.phase_field_bound() && has_phase_field() &&
         !frozen[Block::phase_field] && step.old_solution != nullptr)
       bound.emplace(discretisation);
-    bound_engaged = false;
+    // A crack that needed the bound in the last step (s held at s_n where
+    // it unloads, at 1 where the fourth-order field overshoots) needs it
+    // in this one: engaged from the start, the step saves the iterations
+    // of a first convergence without it.
+    bound_engaged = bound.has_value() && bound_last_solve;
     bound_applied = false;
     n_on_bound    = 0;
   }
@@ -399,6 +403,9 @@ namespace DuctileContact
           }
       }
     accepted_info = last_info;
+    // Not from the solve at t = 0 that relaxes an initial crack: the first
+    // load step, a jump of the prescribed values from rest, starts free.
+    bound_last_solve = bound_engaged && step.t > 0.;
     return true;
   }
 

@@ -196,6 +196,9 @@ namespace DuctileContact
     std::optional<PhaseFieldBound>  bound;
     bool                            bound_engaged = false;
     bool                            bound_applied = false;
+    /// The last converged solve needed the bound: the next one engages it
+    /// from its first iteration instead of first converging without it.
+    bool                            bound_last_solve = false;
     dealii::types::global_dof_index n_on_bound    = 0;
   };
 } // namespace DuctileContact
