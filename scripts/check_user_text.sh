@@ -7,10 +7,11 @@
 # Usage: scripts/check_user_text.sh [FILE...]
 #   default: README.md, doc/, prm/ (the .prm files and the mesh scripts),
 #   scripts/ (but this file, whose comments name the patterns),
-#   tests/README*, and every README.md and results.md under benchmarks/.
-# A folder name that records where data came from (benchmarks/performance/
-# runs/two_bodies/session-45, single-session-33) is data, not prose: a
-# "session" joined to a path or a name by '/', '-' or '_' is not flagged.
+#   tests/README* and the tests' sources, the program's sources (source/,
+#   include/), and every README.md, results.md and script (.sh, .py) under
+#   benchmarks/ outside the run folders.
+# A name joined to a path by '/', '-' or '_' is data, not prose, and is
+# not flagged.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
@@ -20,12 +21,14 @@ else
   cd "$root"
   files=(README.md)
   while IFS= read -r -d '' f; do files+=("$f"); done < <(
-    find doc scripts tests benchmarks prm -type f \( \
+    find doc scripts tests benchmarks prm source include -type f \( \
          -path 'doc/*.md' \
       -o -path 'prm/*.prm' -o -path 'prm/meshes/*.py' \
       -o \( -path 'scripts/*' ! -name '*.pyc' ! -name check_user_text.sh \) \
-      -o -path 'tests/README*' \
-      -o -path 'benchmarks/*' \( -name README.md -o -name results.md \) \
+      -o -path 'tests/README*' -o -path 'tests/*.cc' -o -path 'tests/*.h' \
+      -o -path 'source/*' -o -path 'include/*' \
+      -o \( -path 'benchmarks/*' ! -path '*/runs/*' \( -name README.md \
+             -o -name results.md -o -name '*.sh' -o -name '*.py' \) \) \
     \) -print0 | sort -z)
 fi
 

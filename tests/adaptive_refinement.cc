@@ -1,4 +1,4 @@
-// Issue #28: adaptive refinement during the run (Mesh/Adaptive refinement),
+// Adaptive refinement during the run (Mesh/Adaptive refinement),
 // the predictor-corrector scheme and the state it carries.
 //  - Homogeneous states are represented exactly on every mesh, so a run
 //    that refines must give the run without refinement to round-off: the

@@ -1,4 +1,4 @@
-// Issue #25 item 6, the paper's coupled scene (coarse): prm/block_on_plate.prm
+// The paper's coupled scene (coarse): prm/block_on_plate.prm
 // (the soft block pressed onto the clamped aluminium plate with gradient
 // plasticity, the fourth-order phase field and Coulomb friction, model.md
 // section 7) on a coarse mesh (plate 8 x 5 x 1, block 2 x 2 x 2 Q2 cells)

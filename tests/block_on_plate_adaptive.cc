@@ -1,4 +1,4 @@
-// Issue #28 item 4, the paper's scene refined at the clamp as it yields
+// The paper's scene refined at the clamp as it yields
 // (coarse): the coarse scene of block_on_plate (plate 8 x 5 x 1, block
 // 2 x 2 x 2 Q2 cells, 0.6 mm steps to 9.6 mm, plasticity, the fourth-order
 // phase field and Coulomb friction) three times:

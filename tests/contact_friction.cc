@@ -1,4 +1,4 @@
-// Issue #5, validation rung 12: Coulomb friction on the non-matching
+// Validation rung 12: Coulomb friction on the non-matching
 // two-cube patch (tests/meshes/contact_patch.msh). The lower cube's bottom
 // is clamped; the upper cube's top is pressed down by 1 MPa (t <= 1) and
 // then moved along x by 1e-2 m x (t - 1), held in y; its sides are free.

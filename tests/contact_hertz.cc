@@ -1,4 +1,4 @@
-// Issue #5, validation rung 11: Hertz line contact, coarse. A cylinder
+// Validation rung 11: Hertz line contact, coarse. A cylinder
 // (R = 1 m) pressed onto a flat foundation of the same material (E = 1 GPa,
 // nu = 0.3), plane strain slab, half model (tests/meshes/hertz_h<r>.msh from
 // `make_hertz.py 1 0.01 <r> 0.3`: h = a/r at the contact, a = 0.01 m the

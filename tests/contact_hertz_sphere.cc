@@ -1,4 +1,4 @@
-// Issue #5, validation rung 11: Hertz point contact, coarse. A sphere
+// Validation rung 11: Hertz point contact, coarse. A sphere
 // (R = 1 m) pressed onto a flat foundation of the same material (E = 1 GPa,
 // nu = 0.3), frictionless, quarter model (tests/meshes/hertz_sphere_h2.msh
 // from `make_hertz_sphere.py 1 0.01 2 0.1 1.5`: h = a/2 at the contact for

@@ -1,4 +1,4 @@
-// Issue #5, validation rung 13: ironing, coarse (prm/ironing.prm is the
+// Validation rung 13: ironing, coarse (prm/ironing.prm is the
 // full scene). A stiff die with a circular bottom (R = 30 mm; 1000 times
 // stiffer than the slab) is pressed 1 mm into a soft slab (E = 10 MPa,
 // nu = 0.3; 60 x 6 mm, plane strain as one element layer) and dragged

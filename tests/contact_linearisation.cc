@@ -1,4 +1,4 @@
-// Issue #5: the pieces of the consistent contact tangent against central
+// The pieces of the consistent contact tangent against central
 // finite differences (relative to the largest derivative, step 1e-6 of
 // the face size):
 //  - dD and dM of a face pair (MortarFace): a curved, distorted slave

@@ -1,4 +1,4 @@
-// Issue #5, validation rung 10: the contact patch test. Two unit cubes
+// Validation rung 10: the contact patch test. Two unit cubes
 // stacked along z (tests/meshes/contact_patch.msh, made by
 // `make_contact_patch.py 3 4 10`): 3x3 and 4x4 cells across, node positions
 // swirled in opposite senses so that the contact surfaces do not match.

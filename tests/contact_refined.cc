@@ -1,4 +1,4 @@
-// Issue #28: contact on refined meshes (hanging nodes on contact surfaces)
+// Contact on refined meshes (hanging nodes on contact surfaces)
 // and adaptive refinement in a contact scene.
 //  - The contact patch test of contact_patch (non-matching swirled cubes,
 //    symmetry planes through the contact surface, 1 MPa on top) with part
@@ -16,7 +16,7 @@
 //    coarse block on the plate of contact_semi_smooth (mu_c = 0.2) with one
 //    cell of the block's bottom refined; the condensed tangent against
 //    central finite differences of the residual, with and without the
-//    refinement, and the Newton iterations of the two runs. Session 46 measured
+//    refinement, and the Newton iterations of the two runs. Measured:
 //    what the checks can tell apart: the finite differences' floor is ~1e-5
 //    (three mortar quadratures that agree to 1e-6: 4.5e-6 to 8.8e-6 without the
 //    refinement, 6.2e-6 to 1.0e-5 with it), while a tangent without the

@@ -1,4 +1,4 @@
-// Issue #24: the per-step contact search and its check (doc/contact.md
+// The per-step contact search and its check (doc/contact.md
 // section 8). The candidates of a load step fix the matrix couplings; a
 // master face that comes within reach of a slave face during the step
 // without being a candidate would be left out of D and M. Every assembly

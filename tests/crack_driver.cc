@@ -1,5 +1,5 @@
 // Material-point check of the crack drivers (crack_driving_energy(),
-// issue #25 item 4), no mesh:
+// no mesh):
 //  1. the elastic driver is psi^+ of (27) with its derivatives;
 //  2. the elastic-plus-plastic-work driver psi_D = zeta <psi^+ +
 //     W_p(alpha) - w_c> (zeta = 2.5): its derivatives with respect to F,

@@ -1,4 +1,4 @@
-// Issue #4, the ductile notched specimen (coarse): the scene
+// The ductile notched specimen (coarse): the scene
 // prm/ductile_notch.prm (steel with gradient plasticity and a crack phase
 // field, a plate 1 x 2 mm slit to its centre, pulled) with the overrides of
 // tests/ductile_notch_coarse.prm, on the coarse mesh

@@ -1,4 +1,4 @@
-// Issue #3, validation rungs 7 and 9: a homogeneous bar (unit cube, 2x2x2
+// Validation rungs 7 and 9: a homogeneous bar (unit cube, 2x2x2
 // Q2 cells, symmetry planes, pulled on x = 1) that cracks, quadratic
 // degradation (a_g = 2), no plasticity.
 //  - eta_f = 0: the peak nominal stress equals sigma_c = (9/16) sqrt(E g_c /

@@ -1,4 +1,4 @@
-// Issue #5: the geometry of the segment-based mortar integration
+// The geometry of the segment-based mortar integration
 // (contact/mortar_segments.h) on flat quad9 faces whose overlaps are known:
 //  - identical faces: the weights sum to the face area and every point is
 //    the same point of both faces;

@@ -1,4 +1,4 @@
-// Issue #4, necking of a round bar (validation.md rung 3) on a coarse mesh:
+// Necking of a round bar (validation.md rung 3) on a coarse mesh:
 // the scene prm/necking_bar.prm as shipped (octant model, l_p = 1 mm,
 // linear predictor), with 5 curved Q2 cells per quarter cross-section and 6
 // along the half bar, pulled the full 14 mm in 20 steps. Checks:

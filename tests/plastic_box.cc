@@ -1,4 +1,4 @@
-// Issue #4: homogeneous box (2x2x2 Q2 cells, unit cube) in uniaxial tension
+// Homogeneous box (2x2x2 Q2 cells, unit cube) in uniaxial tension
 // with the visco-plastic J2 model and the hardening field alpha solved
 // globally by (50) with u, against the material-point driver
 // (Testing::uniaxial_plastic_step) stepped with the same load steps:

@@ -1,5 +1,5 @@
 // Material-point driver of the visco-plastic finite-strain J2 update
-// (model.md section 3; issue #4, item 1), no mesh:
+// (model.md section 3), no mesh:
 //  1. the tangents dP/dF, dP/dalpha, dP/ds, dr/dF, dr/dalpha, dr/ds and
 //     those of the crack driver psi^+ (dF, dalpha, ds) equal central finite
 //     differences (relative 1e-6) in plastic and in elastic states (alpha

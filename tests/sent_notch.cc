@@ -1,4 +1,4 @@
-// Issue #3, validation rung 8 (coarse): single-edge-notched tension as a
+// Validation rung 8 (coarse): single-edge-notched tension as a
 // thin 3-D slab (tests/meshes/sent_notch.msh: `prm/meshes/make_sent.py 0.1
 // 0.2`, one element layer, slit from the left edge to the centre), Miehe's
 // material (lambda = 121.15, mu = 80.77 kN/mm^2, g_c = 2.7 N/mm) with a coarse

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue #26 item 8: runs that push the solver, on the coarse copy of the
+# Runs that push the solver, on the coarse copy of the
 # paper's scene (prm/block_on_plate.prm with the plate 8 x 5 x 1 and the
 # block 2 x 2 x 2 Q2 cells, 0.6 mm per step: tests/block_on_plate.cc) and
 # variants of it. Each run must either reach its end time (cut-backs and

@@ -146,7 +146,7 @@ namespace DuctileContact
      * two quad9 shape functions exactly where the face maps are affine
      * (flat parallelogram faces, e.g. two_bodies), so that the overlap can
      * be cut into the fewest triangles (a fan from one vertex: 2 for a
-     * quadrilateral). Session 46 replaced the 12-point degree-6 rule on a
+     * quadrilateral). It replaced the 12-point degree-6 rule on a
      * fan from the centroid (4 triangles for a quadrilateral, 48 points
      * against 32 now); against 12 x 12-point collapsed Gauss rules on three
      * face pairs (a two_bodies-like pair and two distorted curved ones)

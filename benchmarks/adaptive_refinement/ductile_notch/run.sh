@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue #28: the ductile notched plate (prm/ductile_notch.prm with the
+# The ductile notched plate (prm/ductile_notch.prm with the
 # coarse copy's lengths, tests/ductile_notch_coarse.prm: l_f = 0.1 mm,
 # l_p = 0.2 mm) through yield, crack initiation and the crack's run, on
 #  - fixed: the ctest's mesh graded by hand (tests/meshes/

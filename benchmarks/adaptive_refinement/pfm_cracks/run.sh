@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue #28, item 5: pfm-cracks (github.com/tjhei/cracks), built here from
+# pfm-cracks (github.com/tjhei/cracks), built here from
 # its source against Debian's deal.II 9.4.1, runs its own adaptive Miehe
 # notched-tension file (parameters_miehe_tension_adaptive.prm: 2-D, eps =
 # 0.0442 = 4 h of level 6) as shipped (g4: level 4 uniform, two adaptive

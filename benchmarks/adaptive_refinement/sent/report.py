@@ -16,8 +16,8 @@ from runs_io import read_statistics  # noqa: E402
 
 uniform_root = os.path.join(here, "..", "..", "phase_field", "sent", "runs", "lf0.0075")
 # The meshes by hand: run folder -> (label, slab thickness [mm]: one element,
-# l_f / h); the last is the reference run again with this session's code
-# (run.sh's last run), for the wall time.
+# l_f / h); the last is the reference run again with the code of run.sh's
+# last run, for the wall time.
 by_hand_runs = {
     os.path.join(uniform_root, "q2-h1-monolithic-direct-dt0.05-box6"):
         ("by hand, h = l_f", 0.0075, 1),

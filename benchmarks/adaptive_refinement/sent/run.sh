@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue #28: notched tension at l_f = 0.0075 mm (prm/sent.prm's length) with
+# Notched tension at l_f = 0.0075 mm (prm/sent.prm's length) with
 # adaptive refinement from a coarse mesh, against the mesh refined by hand
 # along the crack path (benchmarks/phase_field/sent, results_lf0.0075.md:
 # h = l_f/2 in a square of half-width 6 l_f around the notch tip, 143k

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Hertz line contact (issue #5 benchmark, validation.md rung 11): contact
+# Hertz line contact (validation.md rung 11): contact
 # half-width a and peak pressure p0 against the closed forms
 # a = sqrt(4 P R / (pi E*)), p0 = 2 P / (pi a) for the load P the run
 # carries, against run time, for h = a/2, a/4, a/8 at the contact, dual

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Contact cost against the number of contact faces (issue #5 benchmark):
+# Contact cost against the number of contact faces:
 # the patch test of tests/contact_patch with N x N slave faces (upper cube)
 # on (3N/4) x (3N/4) master faces, swirled meshes, 2 load steps. Prints,
 # per N, the slave faces, unknowns, the time of one contact search (once
@@ -23,7 +23,7 @@ for n in ${SIZES:-4 8 16 24}; do
   mesh="$dir/patch.msh"
   /usr/bin/python3 "$here/../../../tests/meshes/make_contact_patch.py" "$low" "$n" 10 "$mesh" > /dev/null
   # MUMPS: GMRES with the block AMG did not converge well enough for the
-  # line search on the contact tangent at N = 24 (issue #5 notes).
+  # line search on the contact tangent at N = 24.
   solver=direct
   sed -e "s|@MESH@|$mesh|" -e "s|@DIR@|$dir|" -e "s|@SOLVER@|$solver|" \
     "$here/scene.prm.in" > "$dir/scene.prm"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The paper's two bodies with frictional contact (prm/two_bodies.prm,
-# issue #5): the block pressed onto the plate for 113 steps. Runs the scene
+# The paper's two bodies with frictional contact (prm/two_bodies.prm):
+# the block pressed onto the plate for 113 steps. Runs the scene
 # with the current build into runs/consistent and writes results.md and
 # two_bodies.png with report.py, next to the committed run with frozen
 # mortar operators (runs/frozen-operators: code of commit 68b66c7, before

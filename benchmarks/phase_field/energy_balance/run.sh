@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Energy balance against the load increment (issue #3): the coarse SENT of
+# Energy balance against the load increment: the coarse SENT of
 # ../sent_scene/coarse_check.prm (the ctest sent_notch's slab, l_f = 0.1 mm,
 # pulled to t = 1.2, past the separation) with Load stepping/Time step
 # = 0.05 ... 0.00625, once rate-independent (eta_f = 0: the crack jumps

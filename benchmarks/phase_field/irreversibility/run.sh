@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Irreversibility of the crack (issue #3): the history field of psi+ alone,
+# Irreversibility of the crack: the history field of psi+ alone,
 # the bound s >= s_n at every phase-field DoF alone, and both
 # (Coupling/Irreversibility = history | bound | history and bound, the
 # default), on the coarse copy of the ductile notched plate (the ctest
