@@ -1,7 +1,7 @@
-"""Wall time of every scene of run.sh before and after the performance work
-(issue #24): the committed whole run each scene had when the issue was
-filed (where one exists), the defaults of 2026-12-02 and the current
-defaults (runs/<scene>/2026-12-02 and runs/<scene>/default). Writes
+"""Wall time of every scene of run.sh before and after the performance work:
+the committed whole run each scene had before it (2026-11-22 .. 12-01,
+where one exists), the defaults of 2a1bd1b (2026-12-02) and the current
+defaults (runs/<scene>/2a1bd1b and runs/<scene>/default). Writes
 wall_times.png. The machine's speed varied between the days (README)."""
 import os
 import sys
@@ -11,7 +11,7 @@ sys.path.insert(0, os.path.join(here, ".."))
 from runs_io import wall_time  # noqa: E402
 
 root = os.path.join(here, "..")
-# The runs the issue's table quotes: scene -> (screen.txt, MPI ranks).
+# The runs before the performance work: scene -> (screen.txt, MPI ranks).
 before = {
     "two_bodies": ("contact/two_bodies/runs/consistent/screen.txt", 2),
     "sent_coarse": ("phase_field/sent_scene/runs/screen.txt", 2),
@@ -22,8 +22,8 @@ before = {
 }
 scenes = ["two_bodies", "block_on_plate", "sent_coarse", "ductile_notch",
           "hertz_sphere", "ironing", "necking_bar", "box_compression"]
-series = [("when the issue was filed (2026-11-22 .. 12-01)", None),
-          ("defaults of 2026-12-02", "2026-12-02"),
+series = [("before the performance work (2026-11-22 .. 12-01)", None),
+          ("defaults of 2a1bd1b (2026-12-02)", "2a1bd1b"),
           ("current defaults", "default")]
 
 

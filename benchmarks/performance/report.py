@@ -39,8 +39,8 @@ quantities = {
                        "benchmarks/paper_scene/runs/paper (cdb7e3d); the "
                        "paper mesh differs from the refined clamp by 1.3 %"),
     "two_bodies": ("F2_z at 16.95 mm [N]", last("F2_z"), -21154., 1e-3,
-                   "benchmarks/contact/two_bodies/results.md (issue #24: "
-                   "within 0.1 %)"),
+                   "benchmarks/contact/two_bodies/results.md (within "
+                   "0.1 %)"),
     "hertz_sphere": ("F2_z at 0.1 mm [N] (quarter model: P / 4)", last("F2_z"),
                      -745.05 / 4, 1e-3,
                      "benchmarks/contact/hertz_sphere/results.md, h = a/4, "
@@ -52,7 +52,7 @@ quantities = {
     "ductile_notch": ("peak |F2_y| [N]", largest("F2_y"), 14.9015, 2e-3,
                       "the scene's run of 2026-12-04 (c78e5bc; c02dc65 gives "
                       "14.9015469 too, with the same 438 Newton iterations). "
-                      "The plasticity fix b2d4e46 (session 26) moved it on "
+                      "The plasticity fix b2d4e46 moved it on "
                       "purpose from 14.9546, the value of benchmarks/"
                       "plasticity/ductile_notch/runs/h0.05-delta1e-3 computed "
                       "before the fix"),
@@ -60,25 +60,30 @@ quantities = {
                     "0.52055 kN/mm x 0.025 mm, benchmarks/phase_field/"
                     "sent_scene"),
 }
-names = {"2026-12-02": "defaults of 2026-12-02 (2a1bd1b)",
-         "before-give-up": "defaults before GMRES gave up early (sessions 35-36)",
-         "session-39": "defaults of session 39 (e78fca4, run 2026-12-04)",
-         "session-40": "defaults of session 40 (4ff552f, run 2026-12-05)",
-         "session-41": "defaults of session 41 (bb4f62c, run 2026-12-05)",
-         "session-42": "defaults of session 42 (5d3f0ea, double-precision factors; run 2026-12-05)",
-         "session-43": "defaults of session 43 (80c4651, run 2026-12-05 14:14-15:10 next to the current ones)",
-         "session-44": "defaults of session 44 (d466fa3, run 2026-12-05 17:14-17:50)",
-        "session-45": "defaults of session 45 (run 2026-12-05: the contact scenes with 32d30b3 at 18:23-18:27, the others with 608e25e at 17:37-17:46)",
+names = {"2a1bd1b": "defaults of 2a1bd1b (run 2026-12-02)",
+         "before-give-up": "defaults before GMRES on old factors gave up early "
+                           "(run 2026-12-04, before 0fe640b)",
+         "e78fca4": "defaults of e78fca4 (run 2026-12-04)",
+         "4ff552f": "defaults of 4ff552f (run 2026-12-05)",
+         "bb4f62c": "defaults of bb4f62c (run 2026-12-05)",
+         "5d3f0ea": "defaults of 5d3f0ea (double-precision factors; run 2026-12-05)",
+         "80c4651": "defaults of 80c4651 (run 2026-12-05 14:14-15:10)",
+         "d466fa3": "defaults of d466fa3 (run 2026-12-05 17:14-17:50)",
+         "608e25e": "defaults of 608e25e and 32d30b3 (run 2026-12-05: the "
+                    "contact scenes with 32d30b3 at 18:23-18:27, the others "
+                    "with 608e25e at 17:37-17:46)",
+         "00d78c6": "defaults of 00d78c6 (run 2026-12-05)",
          "default": "current defaults",
+         "output": "current defaults with the scene's field output",
          "constant": "constant predictor (the default before the linear one)",
-         "relative": "linear solves to the relative tolerance (the default before session 39)",
-         "newton": "a tangent in every Newton iteration (the default before session 38)",
-         "single-session-33": "single-precision factors (session 33's code, c78e5bc, run 2026-12-04)",
+         "relative": "linear solves to the relative tolerance",
+         "newton": "a tangent in every Newton iteration",
+         "c78e5bc-single": "single-precision factors (the code of c78e5bc, run 2026-12-04)",
          "al": "augmented Lagrangian (2026-12-02)",
          "direct": "double-precision factors",
-         "amg": "GMRES-AMG (the default before session 35)",
-         "monotone": "Line search memory = 1 (monotone; with session 41's round-off rule)",
-         "linear": "Predictor = linear (the choice of the scene before session 42)",
+         "amg": "GMRES-AMG",
+         "monotone": "Line search memory = 1 (monotone)",
+         "linear": "Predictor = linear",
          "best": "Predictor = best linear"}
 order = list(names)  # the variants in the order of the table
 

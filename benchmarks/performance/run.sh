@@ -1,31 +1,27 @@
 #!/usr/bin/env bash
-# Issue #24: every shipped scene that finishes within an hour, run whole on
-# 2 MPI ranks with the current defaults, once more with double-precision
-# MUMPS factors (variant direct: every scene on the direct solver; single-
-# precision factors are the default since session 43), the contact
-# scenes with the augmented Lagrangian (the enforcement before the
-# semi-smooth Newton method), hertz_sphere with GMRES-AMG
-# (variant amg, its default before session 35), and the scenes whose default is the linear
-# predictor since session 36 (sent_coarse) or 37 (two_bodies,
-# block_on_plate) with the constant one (variant constant), and
-# block_on_plate with a tangent in every Newton iteration (variant newton,
-# its default before its chord steps of session 38), and the scenes that
-# stop their linear solves at Newton's tolerances (block_on_plate,
-# ductile_notch, sent_coarse, two_bodies, ironing) with solves to their
-# relative tolerance (variant relative, their default before session 39),
-# and sent_coarse with a monotone line search (variant monotone: Line
-# search memory = 1, the default, which the scene sets to 5 since session
-# 41), and sent_coarse with Predictor = linear (variant linear: the scene's
-# choice before session 42, which sets best linear) and ductile_notch with
-# Predictor = best linear (variant best).
-# Runs of earlier code are kept under another variant name (e.g.
-# runs/SCENE/2026-12-02) for a before/after.
-# report.py writes results.md: wall time, Newton and linear iterations, time
+# Every shipped scene of prm/ that finishes within an hour, run whole on 2
+# MPI ranks: with the current defaults and no field output (variant
+# default), with the scene's own output (variant output), and variants that
+# measure one choice against its alternative:
+#   direct    every scene on the direct solver with double-precision factors
+#             (single-precision factors are the default)
+#   al        two_bodies with the augmented Lagrangian enforcement
+#   amg       hertz_sphere with GMRES-AMG
+#   constant  the constant predictor (scenes that start from the linear one)
+#   newton    block_on_plate with a tangent in every Newton iteration
+#   relative  linear solves to their relative tolerance instead of Newton's
+#   monotone  sent_coarse with Line search memory = 1
+#   linear    sent_coarse with Predictor = linear (the scene sets best linear)
+#   best      ductile_notch with Predictor = best linear
+# Runs of earlier code are kept under the commit they ran (runs/SCENE/<commit>)
+# for a before/after; report.py names them with their commit and date.
+# report.py writes results.md (wall time, Newton and linear iterations, time
 # per Newton iteration split into bulk assembly / contact / linear solve /
-# rest, peak memory, and each scene's quantity of interest against its
-# reference (a speed-up counts only where it agrees).
+# rest, peak memory, each scene's quantity of interest against its reference:
+# a speed-up counts only where it agrees); run_times.py writes run_times.md,
+# the run-time table that README.md and the prm headers point to.
 # Usage: benchmarks/performance/run.sh [SCENE[:VARIANT]...]
-#   default: all scenes below with their variants. Finished runs are kept
+#   default: all scenes with their variants. Finished runs are kept
 #   (delete runs/SCENE/VARIANT to redo one).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -33,16 +29,19 @@ source "$here/../../scripts/env.sh"
 require_build
 
 # scene -> variants; a variant is a name and .prm lines to append
-# (';' separates lines), "default" appends nothing.
+# (';' separates lines); "default" and "output" append nothing ("default"
+# turns the field output off).
 declare -A variants=(
-  [box_compression]="default"
-  [necking_bar]="default direct"
-  [two_bodies]="default relative constant al direct"
-  [block_on_plate]="default relative newton direct constant"
-  [hertz_sphere]="default direct amg"
-  [ironing]="default relative direct"
-  [ductile_notch]="default relative direct best"
-  [sent_coarse]="default relative constant direct monotone linear"
+  [box_compression]="default output"
+  [gmsh_distorted_cube]="default output"
+  [necking_bar]="default output direct"
+  [two_bodies]="default output relative constant al direct"
+  [two_bodies_no_contact]="default output"
+  [block_on_plate]="default output relative newton direct constant"
+  [hertz_sphere]="default output direct amg"
+  [ironing]="default output relative direct"
+  [ductile_notch]="default output relative direct best"
+  [sent_coarse]="default output relative constant direct monotone linear"
 )
 declare -A settings=(
   [al]="subsection Contact pair 1;  set Enforcement = augmented Lagrangian;end"
@@ -55,7 +54,8 @@ declare -A settings=(
   [linear]="subsection Load stepping;  set Predictor = linear;end"
   [best]="subsection Load stepping;  set Predictor = best linear;end"
 )
-order=(box_compression necking_bar two_bodies block_on_plate hertz_sphere ironing ductile_notch sent_coarse)
+order=(box_compression gmsh_distorted_cube necking_bar two_bodies two_bodies_no_contact
+       block_on_plate hertz_sphere ironing ductile_notch sent_coarse)
 
 jobs=("$@")
 if ((${#jobs[@]} == 0)); then
@@ -75,17 +75,23 @@ for job in "${jobs[@]}"; do
   fi
   rm -rf "$out"
   mkdir -p "$out"
-  cp "$project_root/prm/$scene.prm" "$out/scene.prm"
-  printf 'subsection Output\n  set Directory = %s\n  set Interval = 0\nend\n' \
-    "$out" >> "$out/scene.prm"
-  if [[ $variant != default ]]; then
+  copy_scene "$project_root/prm/$scene.prm" "$out/scene.prm"
+  if [[ $variant == output ]]; then
+    printf 'subsection Output\n  set Directory = %s\nend\n' "$out" >> "$out/scene.prm"
+  else
+    printf 'subsection Output\n  set Directory = %s\n  set Interval = 0\nend\n' \
+      "$out" >> "$out/scene.prm"
+  fi
+  if [[ $variant != default && $variant != output ]]; then
     tr ';' '\n' <<< "${settings[$variant]}" >> "$out/scene.prm"
     echo >> "$out/scene.prm"
   fi
   echo "== $scene $variant ($(date +%H:%M))"
+  date -u "+run started %Y-%m-%d %H:%M UTC" > "$out/screen.txt"
   (cd "$project_root" && /usr/bin/time -f "peak memory %M KB per rank" \
-     mpirun -np 2 "$exe" "$out/scene.prm") > "$out/screen.txt" 2>&1 ||
+     mpirun -np 2 "$exe" "$out/scene.prm") >> "$out/screen.txt" 2>&1 ||
     echo "   stopped early, see $out/screen.txt"
 done
-python3 "$here/report.py"
+/usr/bin/env python3 "$here/report.py"
+/usr/bin/env python3 "$here/run_times.py"
 /usr/bin/python3 "$here/plot.py" || echo "   no plot (scripts/install-deps.sh --plots)"

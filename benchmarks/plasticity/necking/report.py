@@ -71,22 +71,35 @@ def evaluate(directory):
         x, r = (1 - w) * x + w * x1, (1 - w) * r + w * r1
         at = dict(at, time=T_CMP)
     n = len(r)
+    w_ext = last["external_work"]
     return dict(u=u, F=F, peak=F[k], u_peak=u[k], t_end=last["time"], t_cmp=at["time"],
+                residual=last["energy_residual"] / w_ext if w_ext else 0.,
+                dissipation=last.get("plastic_dissipation", float("nan")),
+                min_local=min(r_.get("min_plastic_dissipation", 0.) for r_ in rows),
                 radius=r[n // 2], width=neck_width(x, r), x=x, r=r,
                 newton=int(sum(r_["newton_iterations"] for r_ in rows)),
                 time=wall_time(os.path.join(directory, "screen.txt")))
 
 
 def main(here):
-    runs = {}
+    runs, dt_runs, hold_runs = {}, {}, {}
     for name in sorted(os.listdir(os.path.join(here, "runs"))):
         d = os.path.join(here, "runs", name)
-        if os.path.exists(os.path.join(d, "statistics")):
-            mesh, lp = name[1:].split("-lp")
-            axial, refine = mesh.split("-r")
-            # cells along the half bar, and per quarter cross-section
-            runs[(float(lp), int(axial) * 2 ** int(refine) // 2,
-                  5 * 4 ** (int(refine) - 1))] = evaluate(d)
+        if not os.path.exists(os.path.join(d, "statistics")):
+            continue
+        if "-hold" in name:
+            hold_runs[name] = evaluate(d)
+            continue
+        if "-dt" in name:
+            dt_runs[float(name.split("-dt")[1])] = evaluate(d)
+            continue
+        if name == "a20-r1-lp1e-3":  # the scene's mesh and time step
+            dt_runs[0.02] = evaluate(d)
+        mesh, lp = name[1:].split("-lp")
+        axial, refine = mesh.split("-r")
+        # cells along the half bar, and per quarter cross-section
+        runs[(float(lp), int(axial) * 2 ** int(refine) // 2,
+              5 * 4 ** (int(refine) - 1))] = evaluate(d)
     out = ["# Necking bar: peak force, neck radius and width against run time", "",
            "prm/necking_bar.prm (R0 = 6.413 mm, L = 53.334 mm, 1.8 % taper, octant model, pulled 14 mm",
            "in 50 steps of 0.28 mm, 2 MPI ranks). Mesh: Q2 cells along the half bar x cells per quarter",
@@ -112,6 +125,41 @@ def main(here):
             out.append(f"| {lp * 1e3:g} | {m[0]} x {m[1]} | {PULL * v['t_end'] * 1e3:.2f} | {v['peak'] / 1e3:.2f} | "
                        f"{v['u_peak'] * 1e3:.2f} | {v['radius'] * 1e3:.3f} | {v['width'] * 1e3:.2f} | "
                        f"{v['newton']} | {t} | " + " | ".join(err) + " |")
+    out += ["", "Energy account at the end (model's own terms): energy_residual / W_ext, plastic "
+            "dissipation D_p [J] and the smallest local D_p of any step [J/m^3]:", "",
+            "| l_p [mm] | mesh | residual / W_ext | D_p [J] | min local D_p [J/m^3] |",
+            "|---|---|---|---|---|"]
+    for (lp, *m), v in sorted(runs.items(), key=lambda kv: (-kv[0][0], kv[0][1] * kv[0][2])):
+        out.append(f"| {lp * 1e3:g} | {m[0]} x {m[1]} | {v['residual']:+.3%} | "
+                   f"{v['dissipation']:.4g} | {v['min_local']:.3g} |")
+    if len(dt_runs) > 1:
+        out += ["", "Time-step study, l_p = 1 mm, 20 x 5 cells (the scene's mesh): time step t "
+                "(elongation 14 mm t), the same quantities; differences to the next finer step.", "",
+                "| time step | peak F [kN] | neck radius [mm] | neck width [mm] | residual / W_ext | "
+                "D_p [J] | min local D_p [J/m^3] | Newton its | run time [s] | radius change | width change |",
+                "|---|---|---|---|---|---|---|---|---|---|---|"]
+        steps = sorted(dt_runs)
+        for i, dt in enumerate(steps):
+            v = dt_runs[dt]
+            change = ["", ""]
+            if i > 0:
+                f = dt_runs[steps[i - 1]]
+                change = [f"{(v['radius'] - f['radius']) * 1e3:+.4f} mm",
+                          f"{(v['width'] - f['width']) * 1e3:+.3f} mm"]
+            t = f"{v['time']:.0f}" if v["time"] else "(unfinished)"
+            out.append(f"| {dt:g} | {v['peak'] / 1e3:.3f} | {v['radius'] * 1e3:.4f} | "
+                       f"{v['width'] * 1e3:.3f} | {v['residual']:+.3%} | {v['dissipation']:.4g} | "
+                       f"{v['min_local']:.3g} | {v['newton']} | {t} | " + " | ".join(change) + " |")
+    if hold_runs and 0.02 in dt_runs:
+        out += ["", "The hold of alpha at non-yielding points (Plasticity/Hold stiffness factor f), "
+                "20 x 5 cells, time step 0.02:", "",
+                "| f | peak F [kN] | neck radius [mm] | residual / W_ext | D_p [J] | "
+                "min local D_p [J/m^3] | Newton its |", "|---|---|---|---|---|---|---|"]
+        for label, v in [("1", dt_runs[0.02])] + [(n.split("-hold")[1], v)
+                                                  for n, v in sorted(hold_runs.items())]:
+            out.append(f"| {label} | {v['peak'] / 1e3:.3f} | {v['radius'] * 1e3:.4f} | "
+                       f"{v['residual']:+.3%} | {v['dissipation']:.4g} | {v['min_local']:.3g} | "
+                       f"{v['newton']} |")
     open(os.path.join(here, "results.md"), "w").write("\n".join(out) + "\n")
     print("\n".join(out))
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Necking of a round bar (issue #4, validation.md rung 3): the scene
+# Necking of a round bar (validation.md rung 3): the scene
 # prm/necking_bar.prm (octant model, frictionless grip) on meshes with
 # 10, 20, 40 cells along the half bar (Axial subdivisions 10, 20, 40 with
 # Refinements = 1: 5 cells per quarter cross-section) and 20 cells with
@@ -9,17 +9,22 @@
 # give the radius profile r(x) at every step. report.py: peak force, neck
 # radius and neck width against run time.
 # Usage: benchmarks/plasticity/necking/run.sh [NP] [CASE ...]
-#   CASE = <axial subdivisions>:<refinements>:<l_p [m]>, default
-#   10:1:1e-3 10:1:0 20:1:1e-3 20:1:0 40:1:1e-3 40:1:0 20:2:1e-3 (about 1,
-#   2, 4 and 15 min per case on 2 ranks). Cases with a finished run are
-#   skipped.
+#   CASE = <axial subdivisions>:<refinements>:<l_p [m]>[:<time step>
+#   [:<hold stiffness factor>]],
+#   default 10:1:1e-3 10:1:0 20:1:1e-3 20:1:0 40:1:1e-3 40:1:0 20:2:1e-3
+#   (about 1, 2, 4 and 15 min per case on 2 ranks) and the time-step study
+#   of the scene's mesh 20:1:1e-3:0.04 20:1:1e-3:0.01 (time step 0.02
+#   unless given), and the hold of alpha at non-yielding points stiffened
+#   10 times, 20:1:1e-3:0.02:10 (Plasticity/Hold stiffness factor, 1 unless
+#   given). Cases with a finished run are skipped.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 np=${1:-2}
 shift || true
 cases=("$@")
-((${#cases[@]})) || cases=(10:1:1e-3 10:1:0 20:1:1e-3 20:1:0 40:1:1e-3 40:1:0 20:2:1e-3)
+((${#cases[@]})) || cases=(10:1:1e-3 10:1:0 20:1:1e-3 20:1:0 40:1:1e-3 40:1:0 20:2:1e-3
+                           20:1:1e-3:0.04 20:1:1e-3:0.01 20:1:1e-3:0.02:10)
 require_build
 
 # Hull points y = 0.9998 f(x) R, z = 0 for x = L/2 + k 0.5 mm, k = 0..24.
@@ -35,8 +40,9 @@ PY
 )
 
 for case in "${cases[@]}"; do
-  IFS=: read -r axial refine lp <<< "$case"
-  name="a$axial-r$refine-lp$lp"
+  IFS=: read -r axial refine lp dt hold <<< "$case"
+  name="a$axial-r$refine-lp$lp${dt:+-dt$dt}${hold:+-hold$hold}"
+  dt=${dt:-0.02}
   dir="$here/runs/$name"
   if run_finished "$dir"; then
     echo "== $name (done)"
@@ -46,11 +52,15 @@ for case in "${cases[@]}"; do
   sed -e "s|set Axial subdivisions = .*|set Axial subdivisions = $axial|" \
     -e "s|set Refinements        = .*|set Refinements        = $refine|" \
     -e "s|set Length scale  *= .*|set Length scale = $lp|" \
-    -e "s|set Time step  *= .*|set Time step = 0.02|" \
+    -e "s|set Time step  *= .*|set Time step = $dt|" \
     -e "s|set Directory = .*|set Directory = $dir|" \
     -e "s|set Interval  = .*|set Interval = 10|" \
     -e "s|set Probe points = .*|set Probe points = $probes|" \
     "$project_root/prm/necking_bar.prm" > "$dir/scene.prm"
+  if [[ -n $hold ]]; then
+    printf '%s\n' "subsection Body 0" "subsection Plasticity" \
+      "set Hold stiffness factor = $hold" "end" "end" >> "$dir/scene.prm"
+  fi
   echo "== $name"
   run_scene "$np" "$dir"
   grep -E "^step" "$dir/screen.txt" | tail -1 || true
