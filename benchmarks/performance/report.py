@@ -73,6 +73,8 @@ names = {"2a1bd1b": "defaults of 2a1bd1b (run 2026-12-02)",
                     "contact scenes with 32d30b3 at 18:23-18:27, the others "
                     "with 608e25e at 17:37-17:46)",
          "00d78c6": "defaults of 00d78c6 (run 2026-12-05)",
+         "5b2ec8e": "defaults of 5b2ec8e (run 2026-12-06; sent_coarse's "
+                    "overlapped a build)",
          "default": "current defaults",
          "output": "current defaults with the scene's field output",
          "constant": "constant predictor (the default before the linear one)",
