@@ -151,23 +151,22 @@ end
     out << std::setprecision(5) << "  F2_z " << end("F2_z") << " N, W_p "
         << end("plastic_work") << " J, Psi^p " << end("hardening_energy")
         << " J, crack energy " << end("fracture_energy") << " J, friction "
-        << end("contact1_dissipation") << " J, max alpha "
-        << end("max_alpha") << ", max s " << end("max_s") << "\n";
+        << end("contact1_dissipation") << " J, max alpha " << end("max_alpha")
+        << ", max s " << end("max_s") << "\n";
   };
   out << "quantities of interest at 9.6 mm:\n";
   print_quantities(t);
 
   // The step halved: the step error of the end reaction against its bound.
-  const Testing::Table half = Testing::run_scene(
-    Testing::coarse_block_on_plate_prm(R"(
+  const Testing::Table half =
+    Testing::run_scene(Testing::coarse_block_on_plate_prm(R"(
 subsection Load stepping
   set Time step = 2
 end
 )"),
-    "block_on_plate_half");
-  const double step_error =
-    std::abs(at_end("F2_z") - half.at("F2_z").back()) /
-    std::abs(half.at("F2_z").back());
+                       "block_on_plate_half");
+  const double step_error = std::abs(at_end("F2_z") - half.at("F2_z").back()) /
+                            std::abs(half.at("F2_z").back());
   out << "the step halved (0.3 mm): end reaction within 5e-4: "
       << Testing::yes_no(std::abs(half.at("time").back() - 64.) < 1e-12 &&
                          step_error < 5e-4)

@@ -102,6 +102,6 @@ main(int argc, char **argv)
       << "consistent tangent (K d against central differences of R along the "
          "last Newton update, 1e-6): "
       << Testing::yes_no(fine.tangent_error < 1e-6) << std::endl
-      << std::setprecision(5) << "h = a/4: P " << fine.P << " N/m, a "
-      << fine.a << " m, p0 " << fine.p0 << " Pa" << std::endl;
+      << std::setprecision(5) << "h = a/4: P " << fine.P << " N/m, a " << fine.a
+      << " m, p0 " << fine.p0 << " Pa" << std::endl;
 }

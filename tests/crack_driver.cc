@@ -43,7 +43,7 @@ main()
   unsigned int            open_samples = 0, closed_samples = 0, plastic = 0;
   for (unsigned int sample = 0; sample < 60; ++sample)
     {
-      const auto history = Testing::random_plastic_history(gen, d, 0.01);
+      const auto history       = Testing::random_plastic_history(gen, d, 0.01);
       const Tensor<2, dim> &Fp = history.first;
       const PlasticHistory &h  = history.second;
       // The last 20 samples stay near the plastic deformation of the

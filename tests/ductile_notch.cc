@@ -152,8 +152,8 @@ namespace
     out << std::setprecision(5) << "peak " << peak / thickness * 1e-6
         << " kN/mm at u = " << t.at("u2_y")[k_max] * 1e6
         << " um, end force / peak " << F[n - 1] / peak << ", W_p "
-        << t.at("plastic_work")[n - 1] << " J, crack energy "
-        << crack_ratio << " g_c A" << std::setprecision(6) << "\n";
+        << t.at("plastic_work")[n - 1] << " J, crack energy " << crack_ratio
+        << " g_c A" << std::setprecision(6) << "\n";
     std::cout << "peak " << peak / thickness * 1e-6
               << " kN/mm at u = " << t.at("u2_y")[k_max] * 1e6 << " um, alpha "
               << t.at("max_alpha")[k_max] << ", W_p/W_ext " << plastic_share

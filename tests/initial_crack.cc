@@ -33,9 +33,9 @@ namespace
   /// Boundary conditions: @p bottom held, @p top pulled to 1e-5 t m in y,
   /// u_z = 0 on the slab faces @p faces.
   std::string
-  boundaries(const unsigned int                bottom,
-             const unsigned int                top,
-             const std::vector<unsigned int>  &faces)
+  boundaries(const unsigned int               bottom,
+             const unsigned int               top,
+             const std::vector<unsigned int> &faces)
   {
     std::string ids = std::to_string(bottom) + ", " + std::to_string(top);
     std::string text;
@@ -59,7 +59,8 @@ namespace
   /// body @p id with Miehe's material and the extra Fracture entries
   /// @p fracture, pulled to t = 0.65 in steps of 0.05.
   std::string
-  sent_prm(const std::string &mesh, const unsigned int id,
+  sent_prm(const std::string &mesh,
+           const unsigned int id,
            const std::string &fracture)
   {
     const std::string body = std::to_string(id);
@@ -71,7 +72,8 @@ namespace
   subsection Fracture
     set Critical energy release rate = 2700
     set Length scale                 = 1e-4
-)" + fracture + R"(
+)" + fracture +
+           R"(
   end
 end
 subsection Load stepping
@@ -138,15 +140,16 @@ end
   const auto slit_run =
     Testing::run_scene(sent_prm(slit, 1, ""), "initial_crack_slit");
 
-  const std::vector<double> f_data = forces(data, 3), f_slit = forces(slit_run, 2);
-  const auto peak = [](const std::vector<double> &f) {
+  const std::vector<double> f_data = forces(data, 3),
+                            f_slit = forces(slit_run, 2);
+  const auto peak                  = [](const std::vector<double> &f) {
     return static_cast<unsigned int>(std::max_element(f.begin(), f.end()) -
                                      f.begin());
   };
   const unsigned int k = peak(f_data), k_slit = peak(f_slit);
   const std::size_t  last = f_data.size() - 1;
 
-  const double area = 5e-4 * thickness;
+  const double area         = 5e-4 * thickness;
   const double area_ratio_0 = data.at("crack_area")[0] / area;
   const double ratio        = f_data[k] / f_slit[k_slit];
   double       worst        = 0;
@@ -160,20 +163,18 @@ end
       << std::endl
       << "  between 1 and 1.2 times the crack's area, tip at 0.5 mm (+-h/2): "
       << Testing::yes_no(area_ratio_0 >= 1. && area_ratio_0 <= 1.2 &&
-                         std::abs(data.at("cracked_max_x")[0] - 5e-4) <=
-                           0.5e-4)
+                         std::abs(data.at("cracked_max_x")[0] - 5e-4) <= 0.5e-4)
       << std::endl
-      << "peak force: initial crack " << f_data[k] << " kN/mm at u = "
-      << data.at("u3_y")[k] * 1e3 << " mm; slit " << f_slit[k_slit]
-      << " kN/mm; ratio " << ratio << std::endl
-      << "  below the slit's: " << Testing::yes_no(ratio < 1.)
-      << std::endl
+      << "peak force: initial crack " << f_data[k]
+      << " kN/mm at u = " << data.at("u3_y")[k] * 1e3 << " mm; slit "
+      << f_slit[k_slit] << " kN/mm; ratio " << ratio << std::endl
+      << "  below the slit's: " << Testing::yes_no(ratio < 1.) << std::endl
       << "end: Gamma_l / (1 mm x 0.1 mm) = "
-      << data.at("crack_area")[last] / (2. * area) << ", s >= 0.95 up to x = "
-      << data.at("cracked_max_x")[last] * 1e3 << " mm" << std::endl
+      << data.at("crack_area")[last] / (2. * area)
+      << ", s >= 0.95 up to x = " << data.at("cracked_max_x")[last] * 1e3
+      << " mm" << std::endl
       << "  through the ligament (s >= 0.95 within h of x = 1 mm): "
-      << Testing::yes_no(data.at("cracked_max_x")[last] >= 0.9e-3)
-      << std::endl
+      << Testing::yes_no(data.at("cracked_max_x")[last] >= 0.9e-3) << std::endl
       << "  |energy_residual| <= 2 % of W_ext before the peak: "
       << Testing::yes_no(worst <= 0.02) << std::endl;
   std::cout << "largest |residual| / W_ext before the peak " << worst

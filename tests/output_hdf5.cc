@@ -116,9 +116,9 @@ subsection Output
                    F_vtu = vtu_run.at("F1_x").back();
       // The tensors (in HDF5 their six components) and triaxiality.
       const std::string last = "stretch_h5/solution_00002.h5";
-      const auto eta = read_rows(last, "triaxiality");
-      const double e_y = std::log(1. + lo),
-                   s_xx = read_rows(last, "cauchy_stress_xx")[0][0];
+      const auto        eta  = read_rows(last, "triaxiality");
+      const double      e_y  = std::log(1. + lo),
+                   s_xx      = read_rows(last, "cauchy_stress_xx")[0][0];
       double worst_strain = 0., worst_stress = 0., worst_eta = 0.,
              worst_plastic = 0.;
       for (const auto &[component, strain_value, stress_value] :
@@ -129,16 +129,16 @@ subsection Output
             std::tuple{"xz", 0., 0.},
             std::tuple{"yz", 0., 0.}})
         {
-          const std::string c = component;
-          const auto strain = read_rows(last, "log_strain_" + c);
-          const auto sigma = read_rows(last, "cauchy_stress_" + c);
-          const auto plastic = read_rows(last, "plastic_strain_" + c);
+          const std::string c       = component;
+          const auto        strain  = read_rows(last, "log_strain_" + c);
+          const auto        sigma   = read_rows(last, "cauchy_stress_" + c);
+          const auto        plastic = read_rows(last, "plastic_strain_" + c);
           for (std::size_t i = 0; i < strain.size(); ++i)
             {
-              worst_strain = std::max(worst_strain,
-                                      std::abs(strain[i][0] - strain_value));
-              worst_stress = std::max(worst_stress,
-                                      std::abs(sigma[i][0] - stress_value));
+              worst_strain =
+                std::max(worst_strain, std::abs(strain[i][0] - strain_value));
+              worst_stress =
+                std::max(worst_stress, std::abs(sigma[i][0] - stress_value));
               worst_plastic = std::max(worst_plastic, std::abs(plastic[i][0]));
             }
         }
@@ -175,8 +175,7 @@ subsection Output
                 << ", F1_x " << F_h5 << " / " << F_vtu << "; tensors: strain "
                 << worst_strain << ", stress " << worst_stress << ", eta "
                 << worst_eta << ", |sigma_xx| A - |F| "
-                << std::abs(s_xx) * area - std::abs(F_h5)
-                << std::endl;
+                << std::abs(s_xx) * area - std::abs(F_h5) << std::endl;
     }
 
   // 2. Two touching bodies: no merged nodes.

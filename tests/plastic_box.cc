@@ -128,9 +128,9 @@ main(int argc, char **argv)
           << Testing::yes_no(worst.energy < 1e-6) << std::endl
           << "  plastic work = hardening energy (1 %): "
           << Testing::yes_no(std::abs(W_p - Psi_p) < 0.01 * Psi_p) << std::endl
-          << std::setprecision(5) << "  end reaction "
-          << stats.at("F1_x")[last] << ", W_p " << W_p << ", Psi^p " << Psi_p
-          << std::setprecision(6) << std::endl;
+          << std::setprecision(5) << "  end reaction " << stats.at("F1_x")[last]
+          << ", W_p " << W_p << ", Psi^p " << Psi_p << std::setprecision(6)
+          << std::endl;
       std::cout << "dt " << dt << " worst force " << worst.force
                 << " worst energy " << worst.energy << " W_p " << W_p
                 << " Psi_p " << Psi_p << " residual " << residual[k]

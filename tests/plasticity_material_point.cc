@@ -79,12 +79,12 @@ main()
         {
           // The last 20 samples stay near the plastic deformation of the
           // history (F = (I + A) F^p, small A): mostly below yield.
-          const bool     near_yield = sample >= 40;
-          const double   amplitude  = near_yield ? 0.001 : 0.03;
-          const auto history = Testing::random_plastic_history(gen, d, 0.01);
+          const bool   near_yield = sample >= 40;
+          const double amplitude  = near_yield ? 0.001 : 0.03;
+          const auto   history = Testing::random_plastic_history(gen, d, 0.01);
           const Tensor<2, dim> &Fp = history.first;
           const PlasticHistory &h  = history.second;
-          Tensor<2, dim> F   = Testing::perturbed_identity(gen, d, amplitude);
+          Tensor<2, dim> F = Testing::perturbed_identity(gen, d, amplitude);
           if (near_yield)
             F = F * Fp;
           const double           alpha = h.alpha + 0.002 * (1.2 + d(gen));

@@ -43,14 +43,13 @@ namespace DuctileContact
         statistics.add("plastic_energy_released", plastic_energy_released);
         const double min_local = committed.min_plastic_dissipation;
         statistics.add("min_plastic_dissipation",
-                       min_local < std::numeric_limits<double>::max() ?
-                         min_local :
-                         0.);
+                       min_local < std::numeric_limits<double>::max()
+                         ? min_local
+                         : 0.);
         statistics.add("min_alpha",
-                       committed.min_alpha <
-                           std::numeric_limits<double>::max() ?
-                         committed.min_alpha :
-                         0.);
+                       committed.min_alpha < std::numeric_limits<double>::max()
+                         ? committed.min_alpha
+                         : 0.);
       }
     if (cracking)
       {

@@ -30,10 +30,10 @@ namespace DuctileContact
         for (unsigned int d = 0; d < dim; ++d)
           {
             const bool empty = !(cracked_volume > 0.);
-            cracked_min[d] =
-              empty ? o.cracked_min[d] : std::min(cracked_min[d], o.cracked_min[d]);
-            cracked_max[d] =
-              empty ? o.cracked_max[d] : std::max(cracked_max[d], o.cracked_max[d]);
+            cracked_min[d]   = empty ? o.cracked_min[d]
+                                     : std::min(cracked_min[d], o.cracked_min[d]);
+            cracked_max[d]   = empty ? o.cracked_max[d]
+                                     : std::max(cracked_max[d], o.cracked_max[d]);
           }
         cracked_volume += o.cracked_volume;
       }
@@ -95,16 +95,17 @@ namespace DuctileContact
       Utilities::MPI::min(min_plastic_dissipation, comm);
     info.min_yielding_alpha_increment =
       Utilities::MPI::min(min_yielding_alpha_increment, comm);
-    info.switch_flips = Utilities::MPI::sum(switch_flips, comm);
-    info.crack_area   = Utilities::MPI::sum(crack_area, comm);
+    info.switch_flips   = Utilities::MPI::sum(switch_flips, comm);
+    info.crack_area     = Utilities::MPI::sum(crack_area, comm);
     info.cracked_volume = Utilities::MPI::sum(cracked_volume, comm);
     for (unsigned int d = 0; d < dim; ++d)
       {
         const double big = std::numeric_limits<double>::max();
-        const double lo  = Utilities::MPI::min(
-          cracked_volume > 0. ? cracked_min[d] : big, comm);
-        const double hi = Utilities::MPI::max(
-          cracked_volume > 0. ? cracked_max[d] : -big, comm);
+        const double lo =
+          Utilities::MPI::min(cracked_volume > 0. ? cracked_min[d] : big, comm);
+        const double hi =
+          Utilities::MPI::max(cracked_volume > 0. ? cracked_max[d] : -big,
+                              comm);
         info.cracked_min[d] = info.cracked_volume > 0. ? lo : 0.;
         info.cracked_max[d] = info.cracked_volume > 0. ? hi : 0.;
       }
@@ -121,12 +122,12 @@ namespace DuctileContact
         sums.push_back(scale_squared[b]);
       }
     Utilities::MPI::sum(sums, comm, sums);
-    info.stored_energy                   = sums[0];
-    info.hardening_energy                = sums[1];
-    info.fracture_energy                 = sums[2];
-    info.plastic_work_increment          = sums[3];
-    info.fracture_viscous_work_increment = sums[4];
-    info.history_work_increment          = sums[5];
+    info.stored_energy                    = sums[0];
+    info.hardening_energy                 = sums[1];
+    info.fracture_energy                  = sums[2];
+    info.plastic_work_increment           = sums[3];
+    info.fracture_viscous_work_increment  = sums[4];
+    info.history_work_increment           = sums[5];
     info.plastic_energy_release_increment = sums[6];
     for (unsigned int b = 0; b < Block::n_blocks; ++b)
       {

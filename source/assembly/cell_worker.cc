@@ -111,14 +111,14 @@ namespace DuctileContact
                  const double                s,
                  const PlasticityParameters &plastic)
     {
-      return plastic_work_of_step(
-        Physics::Elasticity::StandardTensors<dim>::I + grad_u_old,
-        F,
-        history_n,
-        m.updated.Cp_inv,
-        s_n,
-        s,
-        plastic);
+      return plastic_work_of_step(Physics::Elasticity::StandardTensors<dim>::I +
+                                    grad_u_old,
+                                  F,
+                                  history_n,
+                                  m.updated.Cp_inv,
+                                  s_n,
+                                  s,
+                                  plastic);
     }
 
     /// The change of Psi^p_loc over a step split into its parts by alpha
@@ -235,14 +235,13 @@ namespace DuctileContact
       JxW;
     if (committing)
       {
-        const double work =
-          plastic_work(F,
-                       scratch.grad_u_old[q],
-                       m,
-                       history.plastic,
-                       scratch.s_old[q],
-                       s,
-                       plastic);
+        const double work = plastic_work(F,
+                                         scratch.grad_u_old[q],
+                                         m,
+                                         history.plastic,
+                                         scratch.s_old[q],
+                                         s,
+                                         plastic);
         sums.plastic_work_increment += work * JxW;
         const PlasticEnergySplit split = split_plastic_energy_change(
           history.plastic.alpha, alpha, scratch.s_old[q], s, plastic);

@@ -15,11 +15,19 @@ namespace DuctileContact
   {
     /// The scalar and vector fields of the surface output, in the order
     /// of their rows in a patch.
-    const std::vector<std::string> field_names = {
-      "pressure", "gap", "active", "friction_state",
-      "normal",   "normal", "normal",
-      "slip",     "slip",   "slip",
-      "traction", "traction", "traction"};
+    const std::vector<std::string> field_names = {"pressure",
+                                                  "gap",
+                                                  "active",
+                                                  "friction_state",
+                                                  "normal",
+                                                  "normal",
+                                                  "normal",
+                                                  "slip",
+                                                  "slip",
+                                                  "slip",
+                                                  "traction",
+                                                  "traction",
+                                                  "traction"};
 
     /**
      * A slave surface as DataOut patches: each quad9 face a patch with two
@@ -35,12 +43,12 @@ namespace DuctileContact
       {
         const ContactSurface &surface = *data.surface;
         const unsigned int    rank    = Utilities::MPI::this_mpi_process(comm);
-        const unsigned int    ranks = Utilities::MPI::n_mpi_processes(comm);
+        const unsigned int    ranks   = Utilities::MPI::n_mpi_processes(comm);
         // deal.II's vertex order of a quadrilateral, in quad9 numbering.
         constexpr unsigned int corners[4] = {0, 2, 6, 8};
         for (unsigned int f = rank; f < surface.faces.size(); f += ranks)
           {
-            const auto                  &face = surface.faces[f];
+            const auto                &face = surface.faces[f];
             DataOutBase::Patch<2, dim> patch;
             patch.n_subdivisions = 2;
             patch.reference_cell = ReferenceCells::Quadrilateral;

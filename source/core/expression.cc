@@ -30,7 +30,7 @@ namespace DuctileContact
       {
         std::ostringstream info;
         e.print_info(info);
-        message          = one_line(info.str());
+        message         = one_line(info.str());
         const auto said = message.find("The parser said: ");
         if (said != std::string::npos)
           message = message.substr(said + 17);

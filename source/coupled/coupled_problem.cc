@@ -182,13 +182,13 @@ namespace DuctileContact
   void
   CoupledProblem::begin_solve()
   {
-    // Irreversibility as a bound s_n <= s <= 1 on the phase-field DoFs, not in a
-    // sub-solve that freezes s.
+    // Irreversibility as a bound s_n <= s <= 1 on the phase-field DoFs, not in
+    // a sub-solve that freezes s.
     bound.reset();
     if (coupling.phase_field_bound() && has_phase_field() &&
         !frozen[Block::phase_field] && step.old_solution != nullptr)
       bound.emplace(discretisation);
-    // A crack that needed the bound in the last step (s held at s_n where
+    // A crack that held DoFs on the bound in the last step (s at s_n where
     // it unloads, at 1 where the fourth-order field overshoots) needs it
     // in this one: engaged from the start, the step saves the iterations
     // of a first convergence without it.
@@ -405,7 +405,7 @@ namespace DuctileContact
     accepted_info = last_info;
     // Not from the solve at t = 0 that relaxes an initial crack: the first
     // load step, a jump of the prescribed values from rest, starts free.
-    bound_last_solve = bound_engaged && step.t > 0.;
+    bound_last_solve = bound_engaged && n_on_bound > 0 && step.t > 0.;
     return true;
   }
 

@@ -285,9 +285,9 @@ namespace DuctileContact
                     "plasticity (set Plasticity = true for the plastic "
                     "drivers)");
         const std::string error =
-          crack.initial_crack.empty() ?
-            "" :
-            expression_error(crack.initial_crack, "x,y,z");
+          crack.initial_crack.empty()
+            ? ""
+            : expression_error(crack.initial_crack, "x,y,z");
         check_input(error.empty(),
                     f + "Initial crack",
                     crack.initial_crack,

@@ -135,8 +135,7 @@ namespace DuctileContact
     // data.
     const bool         as_tensor = format == OutputFormat::vtu;
     const unsigned int n_per =
-      as_tensor ? dim * dim
-                : SymmetricTensor<2, dim>::n_independent_components;
+      as_tensor ? dim * dim : SymmetricTensor<2, dim>::n_independent_components;
     const unsigned int n_tensor = tensor_names.size() * n_per;
     FESystem<dim>      fe_tensor(FE_DGQ<dim>(0), n_tensor);
     DoFHandler<dim>    tensor_dofs(tria);
@@ -145,7 +144,7 @@ namespace DuctileContact
       tensor_dofs.locally_owned_dofs(),
       DoFTools::extract_locally_relevant_dofs(tensor_dofs),
       tria.get_communicator());
-    Vector<float> triaxiality(tria.n_active_cells());
+    Vector<float>                        triaxiality(tria.n_active_cells());
     std::vector<types::global_dof_index> indices(n_tensor);
     for (const auto &cell : tensor_dofs.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -156,8 +155,8 @@ namespace DuctileContact
           for (unsigned int k = 0; k < fields.size(); ++k)
             for (unsigned int c = 0; c < n_per; ++c)
               tensors[indices[k * n_per + c]] =
-                as_tensor ? fields[k][c / dim][c % dim] :
-                            fields[k].access_raw_entry(c);
+                as_tensor ? fields[k][c / dim][c % dim]
+                          : fields[k].access_raw_entry(c);
           const double equivalent = von_mises(cells.cauchy[i]);
           triaxiality[i] =
             equivalent > 0. ? trace(cells.cauchy[i]) / 3. / equivalent : 0.;
@@ -179,8 +178,8 @@ namespace DuctileContact
       tensor_component_names,
       std::vector<DataComponentInterpretation::DataComponentInterpretation>(
         n_tensor,
-        as_tensor ? DataComponentInterpretation::component_is_part_of_tensor :
-                    DataComponentInterpretation::component_is_scalar));
+        as_tensor ? DataComponentInterpretation::component_is_part_of_tensor
+                  : DataComponentInterpretation::component_is_scalar));
     data_out.add_data_vector(triaxiality, "triaxiality");
     data_out.build_patches(discretisation.degree);
 

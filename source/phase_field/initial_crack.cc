@@ -11,9 +11,9 @@ namespace DuctileContact
   using namespace dealii;
 
   bool
-  set_initial_crack(const Discretisation                &discretisation,
-                    const std::deque<BodyParameters>    &bodies,
-                    TrilinosWrappers::MPI::BlockVector  &u)
+  set_initial_crack(const Discretisation               &discretisation,
+                    const std::deque<BodyParameters>   &bodies,
+                    TrilinosWrappers::MPI::BlockVector &u)
   {
     std::map<types::material_id, std::unique_ptr<FunctionParser<dim>>> cracks;
     for (const BodyParameters &b : bodies)
@@ -26,7 +26,7 @@ namespace DuctileContact
     if (cracks.empty())
       return false;
 
-    const IndexSet                      &owned = discretisation.locally_owned_dofs;
+    const IndexSet &owned = discretisation.locally_owned_dofs;
     std::vector<types::global_dof_index> indices;
     for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
       {
@@ -37,20 +37,18 @@ namespace DuctileContact
         indices.resize(fe.n_dofs_per_cell());
         cell->get_dof_indices(indices);
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-          if (fe.system_to_component_index(i).first ==
-                Component::phase_field &&
+          if (fe.system_to_component_index(i).first == Component::phase_field &&
               owned.is_element(indices[i]))
             {
               // The node of this DoF, from the base element (FESystem's
               // own support points need every base to have them).
-              const auto base = fe.system_to_base_index(i);
+              const auto       base = fe.system_to_base_index(i);
               const Point<dim> X =
                 discretisation.mapping[0].transform_unit_to_real_cell(
                   cell,
                   fe.base_element(base.first.first)
                     .unit_support_point(base.second));
-              u(indices[i]) =
-                std::clamp(crack->second->value(X), 0., 1.);
+              u(indices[i]) = std::clamp(crack->second->value(X), 0., 1.);
             }
       }
     u.compress(VectorOperation::insert);

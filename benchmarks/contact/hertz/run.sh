@@ -19,7 +19,12 @@ for ratio in 2 4 8; do
     dir="$here/runs/h$ratio-$basis"
     if [[ -f "$dir/statistics" ]]; then echo "== h = a/$ratio, $basis (done)"; continue; fi
     mkdir -p "$dir"
+    # The semi-smooth Newton method condenses with the dual basis's
+    # diagonal D; the standard basis runs with the augmented Lagrangian.
+    enforcement="semi-smooth Newton"
+    [[ $basis == standard ]] && enforcement="augmented Lagrangian"
     sed -e "s|@MESH@|$mesh|" -e "s|@DIR@|$dir|" -e "s|@BASIS@|$basis|" \
+      -e "s|@ENFORCEMENT@|$enforcement|" \
       "$here/scene.prm.in" > "$dir/scene.prm"
     echo "== h = a/$ratio, $basis"
     run_scene "$np" "$dir"

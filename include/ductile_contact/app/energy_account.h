@@ -76,11 +76,11 @@ namespace DuctileContact
 
   private:
     dealii::TrilinosWrappers::MPI::BlockVector previous_force;
-    double                                     external_work         = 0.;
-    double                                     plastic_work          = 0.;
-    double                                     fracture_viscous_work = 0.;
-    double                                     history_driving_work  = 0.;
-    double plastic_energy_released = 0.;
-    double initial_fracture_energy = 0.;
+    double                                     external_work           = 0.;
+    double                                     plastic_work            = 0.;
+    double                                     fracture_viscous_work   = 0.;
+    double                                     history_driving_work    = 0.;
+    double                                     plastic_energy_released = 0.;
+    double                                     initial_fracture_energy = 0.;
   };
 } // namespace DuctileContact

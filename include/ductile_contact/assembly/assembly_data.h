@@ -88,8 +88,8 @@ namespace DuctileContact
     /// s >= cracked_threshold at the quadrature points [m^3], and the
     /// bounding box of those points in the reference configuration [m]
     /// (the crack tip of a through-crack is its far end; zero if none).
-    double           crack_area     = 0.;
-    double           cracked_volume = 0.;
+    double             crack_area     = 0.;
+    double             cracked_volume = 0.;
     dealii::Point<dim> cracked_min, cracked_max;
     /// Largest alpha at a quadrature point, and the smallest alpha -
     /// alpha_n over the yielding ones (chi_p = 1; +inf if none yields): a
@@ -123,12 +123,12 @@ namespace DuctileContact
    */
   struct AssemblyReduction
   {
-    double stored_energy                   = 0.;
-    double hardening_energy                = 0.;
-    double fracture_energy                 = 0.;
-    double plastic_work_increment          = 0.;
-    double fracture_viscous_work_increment = 0.;
-    double history_work_increment          = 0.;
+    double stored_energy                    = 0.;
+    double hardening_energy                 = 0.;
+    double fracture_energy                  = 0.;
+    double plastic_work_increment           = 0.;
+    double fracture_viscous_work_increment  = 0.;
+    double history_work_increment           = 0.;
     double plastic_energy_release_increment = 0.;
     double min_plastic_dissipation = std::numeric_limits<double>::max();
     double min_alpha               = std::numeric_limits<double>::max();
@@ -165,8 +165,10 @@ namespace DuctileContact
     {
       for (unsigned int d = 0; d < dim; ++d)
         {
-          cracked_min[d] = cracked_volume > 0. ? std::min(cracked_min[d], p[d]) : p[d];
-          cracked_max[d] = cracked_volume > 0. ? std::max(cracked_max[d], p[d]) : p[d];
+          cracked_min[d] =
+            cracked_volume > 0. ? std::min(cracked_min[d], p[d]) : p[d];
+          cracked_max[d] =
+            cracked_volume > 0. ? std::max(cracked_max[d], p[d]) : p[d];
         }
       cracked_volume += JxW;
     }

@@ -18,9 +18,9 @@ namespace DuctileContact
   /**
    * Scratch of one cell: evaluation objects and the solution at the
    * quadrature points. Elastic cells need gradients only; cells with alpha
-   * or s also values and the points (crack measures); hessians (for the bi-Laplacian) only the one-off
-   * crack functional matrices of a mesh. A copy builds
-   * its own evaluation objects (one per thread).
+   * or s also values and the points (crack measures); hessians (for the
+   * bi-Laplacian) only the one-off crack functional matrices of a mesh. A copy
+   * builds its own evaluation objects (one per thread).
    */
   struct CellScratch
   {

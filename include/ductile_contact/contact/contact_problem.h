@@ -11,10 +11,10 @@
 #include <ductile_contact/contact/contact_parameters.h>
 #include <ductile_contact/contact/contact_surface.h>
 #include <ductile_contact/contact/mortar_operators.h>
-#include <ductile_contact/output/output_parameters.h>
 #include <ductile_contact/contact/nodal_complementarity.h>
 #include <ductile_contact/contact/nodal_contact.h>
 #include <ductile_contact/materials/body_parameters.h>
+#include <ductile_contact/output/output_parameters.h>
 #include <ductile_contact/output/statistics.h>
 
 #include <deque>

@@ -6,7 +6,6 @@
 #include <ductile_contact/output/output_parameters.h>
 
 #include <mpi.h>
-
 #include <string>
 #include <utility>
 #include <vector>

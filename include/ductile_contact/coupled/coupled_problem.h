@@ -193,12 +193,13 @@ namespace DuctileContact
     BranchRecord branches;
 
     /// The bound of the current solve (if it is bounded).
-    std::optional<PhaseFieldBound>  bound;
-    bool                            bound_engaged = false;
-    bool                            bound_applied = false;
-    /// The last converged solve needed the bound: the next one engages it
-    /// from its first iteration instead of first converging without it.
+    std::optional<PhaseFieldBound> bound;
+    bool                           bound_engaged = false;
+    bool                           bound_applied = false;
+    /// The last converged solve held DoFs on the bound: the next one
+    /// engages it from its first iteration instead of first converging
+    /// without it.
     bool                            bound_last_solve = false;
-    dealii::types::global_dof_index n_on_bound    = 0;
+    dealii::types::global_dof_index n_on_bound       = 0;
   };
 } // namespace DuctileContact

@@ -38,8 +38,9 @@ namespace DuctileContact
    * test use C in place of R_s, so DoFs that sit on the bound with a zero
    * multiplier (e.g. s = 0 far from a crack, where round-off decides the
    * sign of R) count as converged on either side of A. CoupledProblem
-   * engages the active set only once plain Newton has converged to a state
-   * whose C does not meet the tolerance, and in every iteration with the
+   * engages the active set once plain Newton has converged to a state
+   * whose C does not meet the tolerance (from the first iteration when the
+   * last step held DoFs on the bound), and in every iteration with the
    * bound refines A on the s block alone (identify_active_set()) before
    * the coupled solve.
    *
