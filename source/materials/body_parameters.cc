@@ -215,8 +215,9 @@ namespace DuctileContact
       "syntax, clipped to [0, 1]; taken at the nodes of s), e.g. 'abs(y - "
       "0.5e-3) < 1e-9 && x <= 0.5e-3' for the nodes on a segment of the "
       "plane y = 0.5 mm, or '(x < 1e-3) * exp(-abs(y) / 1e-5)' for a "
-      "profile. The bound s >= s_n of Coupling/Irreversibility keeps it. "
-      "Empty: none.",
+      "profile. Relaxed at zero load before the first step (s at least "
+      "these values); the bound s >= s_n of Coupling/Irreversibility keeps "
+      "it. Empty: none.",
       Patterns::Anything());
     prm.leave_subsection();
   }
