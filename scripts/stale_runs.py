@@ -7,7 +7,7 @@ or, for runs written before the program recorded it, the last commit that
 changed the statistics file. The physics is every file under
 source/materials, source/phase_field, source/contact and source/assembly
 (and their headers under include/ductile_contact/); a run is stale when a
-commit that changed the physics, other than in comments or formatting, is newer than
+commit that changed the physics, other than in comments, help texts or formatting, is newer than
 the run's commit.
 
 A run that stays on purpose (a historical comparison) is listed in a file
@@ -39,17 +39,24 @@ def git(*args):
 
 def changes_code(h):
     """Whether commit h changed the code of the physics: its removed and added
-    lines, comments dropped and white space removed, differ (a commit that
-    changes comments or only reformats does not count)."""
+    lines, comments and lines of help text dropped and white space removed,
+    differ (a commit that changes comments or help texts or only reformats
+    does not count)."""
     diff = git("show", "--format=", "--unified=0", h, "--", *PHYSICS)
     removed, added = [], []
     for line in diff.splitlines():
         if line.startswith(("+++", "---")) or not line.startswith(("+", "-")):
             continue
         text = line[1:].strip()
+        # Comments and help texts (string literals) do not count.
         if text and not text.startswith(("//", "*", "/*")):
-            (added if line[0] == "+" else removed).append("".join(text.split()))
-    return "".join(removed) != "".join(added)
+            code = re.sub(r'"(?:[^"\\]|\\.)*"', '""', text)
+            (added if line[0] == "+" else removed).append("".join(code.split()))
+    # Adjacent literals are one string in C++: a re-wrapped help text is too.
+    def joined(lines):
+        return re.sub(r'(?:"")+', '""', "".join(lines))
+
+    return joined(removed) != joined(added)
 
 
 def physics_commits():
