@@ -1,4 +1,4 @@
-// PhaseFieldBound::identify_active_set on a linearised bound problem whose
+// FieldBound::identify_active_set on a linearised bound problem whose
 // operator has no maximum principle: the s-s block is the crack
 // functional's cell terms (mass 1/(2l) + l Laplacian + l^3/2 bi-Laplacian,
 // Q2, l = 2h, so the fourth-order term dominates), s = s_n = 0, and the
@@ -27,7 +27,7 @@
 
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/phase_field/c0ip.h>
-#include <ductile_contact/phase_field/phase_field_bound.h>
+#include <ductile_contact/coupled/field_bound.h>
 
 #include "tests.h"
 
@@ -149,7 +149,7 @@ main(int argc, char **argv)
   constraints.close();
 
   // The first set, then the refined one; s = s_n = 0 (u = old = zero).
-  PhaseFieldBound bound(d);
+  FieldBound bound(d, Block::phase_field, 1.);
   bound.record_diagonal(K);
   const auto n_first =
     bound.update_active_set(zero, zero, residual, constraints);

@@ -3,12 +3,13 @@
 //  - Homogeneous states are represented exactly on every mesh, so a run
 //    that refines must give the run without refinement to round-off: the
 //    cracking bar (fracture_bar: s grows uniformly; refined once s > 0.05)
-//    and the plastic box (plastic_box: alpha grows uniformly; refined once
-//    alpha > 1e-3). Both are refined where the loaded face is, so the
-//    external work checks that the last step's force is assembled again on
-//    the new mesh (an interpolated nodal force would count the new nodes
-//    of the face twice), the plastic work and hardening energy that the
-//    quadrature-point history arrives on the children, and the step
+//    (also with the phase field in the Bernstein basis, whose prolongation
+//    is exact subdivision) and the plastic box (plastic_box: alpha grows
+//    uniformly; refined once alpha > 1e-3). Both are refined where the loaded
+//    face is, so the external work checks that the last step's force is
+//    assembled again on the new mesh (an interpolated nodal force would count
+//    the new nodes of the face twice), the plastic work and hardening energy
+//    that the quadrature-point history arrives on the children, and the step
 //    counts that the corrector redoes a step without a trace of the first
 //    attempt. To 1e-7
 //    of each column's scale (energies: of the external work): the
@@ -178,6 +179,17 @@ main(int argc, char **argv)
     adaptive("Phase-field threshold", 0.05, 1),
     {"F1_x", "max_s", "external_work", "fracture_energy", "energy_residual"},
     "bar");
+  compare_homogeneous(
+    out,
+    "cracking bar, Bernstein phase field",
+    cube_prm(cracking_body, "0.0025*t", 0.025, 1e-10) + R"(
+subsection Finite elements
+  set Phase-field basis = Bernstein
+end
+)",
+    adaptive("Phase-field threshold", 0.05, 1),
+    {"F1_x", "max_s", "external_work", "fracture_energy", "energy_residual"},
+    "bar_bernstein");
   compare_homogeneous(out,
                       "plastic box",
                       cube_prm(plastic_body, "0.02*t", 0.1, 1e-11),

@@ -83,6 +83,18 @@ namespace DuctileContact
                       "Degree p of the FE_Q elements of every field (u, "
                       "alpha, s). The fourth-order phase field needs p >= 2.",
                       Patterns::Integer(1, 4));
+    add_option(prm,
+               "Phase-field basis",
+               phase_field_basis,
+               field_basis_names(),
+               "Basis of the phase field s (the same Q_p space either way). "
+               "Lagrange: FE_Q, the DoFs are nodal values, and the bound "
+               "s_n <= s <= 1 (Coupling/Irreversibility) holds at the nodes; "
+               "the fourth-order field can exceed 1 between them. Bernstein: "
+               "the DoFs are Bernstein coefficients, of which s is a convex "
+               "combination at every point, so the bound holds everywhere; an "
+               "initial crack and coarsening take the field's values at the "
+               "Greville points (doc/model.md section 4.2).");
     prm.leave_subsection();
 
     declare_lists(prm, material_ids, boundary_ids, contact_pair_numbers);

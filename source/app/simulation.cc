@@ -89,9 +89,11 @@ namespace DuctileContact
     std::map<types::material_id, BodyFields> fields;
     for (const BodyParameters &b : parameters.bodies)
       fields[b.material_id] = BodyFields{b.plasticity, b.fracture};
-    discretisation = std::make_unique<Discretisation>(triangulation,
-                                                      parameters.fe_degree,
-                                                      fields);
+    discretisation =
+      std::make_unique<Discretisation>(triangulation,
+                                       parameters.fe_degree,
+                                       fields,
+                                       parameters.phase_field_basis);
     probes = std::make_unique<ProbePoints>(parameters.output.probe_points);
 
     // Force scale of the absolute Newton tolerance: mu_max * diameter^2.

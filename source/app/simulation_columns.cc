@@ -138,6 +138,7 @@ namespace DuctileContact
     if (has_block(Block::phase_field))
       {
         statistics.add("max_s", max_phase_field);
+        statistics.add("max_s_points", committed.max_s_point);
         statistics.add("min_s_change", min_phase_field_change);
         statistics.add("crack_area", committed.crack_area);
         statistics.add("cracked_volume", committed.cracked_volume);

@@ -23,7 +23,8 @@ namespace DuctileContact
     plastic_energy_release_increment += o.plastic_energy_release_increment;
     min_plastic_dissipation =
       std::min(min_plastic_dissipation, o.min_plastic_dissipation);
-    min_alpha = std::min(min_alpha, o.min_alpha);
+    min_alpha   = std::min(min_alpha, o.min_alpha);
+    max_s_point = std::max(max_s_point, o.max_s_point);
     crack_area += o.crack_area;
     if (o.cracked_volume > 0.)
       {
@@ -89,8 +90,9 @@ namespace DuctileContact
                                     non_finite_site.body,
                                     first_non_finite);
       }
-    info.max_alpha = Utilities::MPI::max(max_alpha, comm);
-    info.min_alpha = Utilities::MPI::min(min_alpha, comm);
+    info.max_alpha   = Utilities::MPI::max(max_alpha, comm);
+    info.min_alpha   = Utilities::MPI::min(min_alpha, comm);
+    info.max_s_point = Utilities::MPI::max(max_s_point, comm);
     info.min_plastic_dissipation =
       Utilities::MPI::min(min_plastic_dissipation, comm);
     info.min_yielding_alpha_increment =

@@ -377,6 +377,8 @@ namespace DuctileContact
         sums.stored_energy += m.psi_elastic * JxW;
         volume += JxW;
         vm += von_mises(m.tau) * JxW;
+        if (has_s)
+          sums.max_s_point = std::max(sums.max_s_point, scratch.s[q]);
         if (has_s && scratch.s[q] >= cracked_threshold)
           sums.note_cracked(fe_values.quadrature_point(q), JxW);
         mean += trace(m.tau) / 3. * JxW;

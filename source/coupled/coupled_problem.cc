@@ -15,7 +15,7 @@ namespace DuctileContact
 
   namespace
   {
-    /// Sweeps of PhaseFieldBound::identify_active_set() per Newton
+    /// Sweeps of FieldBound::identify_active_set() per Newton
     /// iteration; the coupled iteration goes on from the last set if the
     /// sweeps have not settled (a set that cycles).
     constexpr unsigned int max_active_set_sweeps = 20;
@@ -184,17 +184,16 @@ namespace DuctileContact
   {
     // Irreversibility as a bound s_n <= s <= 1 on the phase-field DoFs, not in
     // a sub-solve that freezes s.
-    bound.reset();
-    if (coupling.phase_field_bound() && has_phase_field() &&
-        !frozen[Block::phase_field] && step.old_solution != nullptr)
-      bound.emplace(discretisation);
-    // A crack that held DoFs on the bound in the last step (s at s_n where
-    // it unloads, at 1 where the fourth-order field overshoots) needs it
-    // in this one: engaged from the start, the step saves the iterations
-    // of a first convergence without it.
-    bound_engaged = bound.has_value() && bound_last_solve;
-    bound_applied = false;
-    n_on_bound    = 0;
+    bounds.clear();
+    if (step.old_solution != nullptr && coupling.phase_field_bound() &&
+        block_solved(Block::phase_field))
+      bounds.push_back({FieldBound(discretisation, Block::phase_field, 1.)});
+    // A bound that held DoFs in the last step (s at s_n where a crack
+    // unloads, at 1 where the fourth-order field overshoots) is needed in
+    // this one: engaged from the start, the step saves the iterations of a
+    // first convergence without it.
+    for (BoundState &b : bounds)
+      b.engaged = bound_last_solve[b.bound.block()];
   }
 
 
@@ -293,26 +292,45 @@ namespace DuctileContact
 
 
   void
-  CoupledProblem::apply_bound(const Vector &x)
+  CoupledProblem::apply_bounds(const Vector &x)
   {
-    bound->record_diagonal(tangent);
-    const types::global_dof_index n_first =
-      bound->update_active_set(x, *step.old_solution, residual, constraints);
-    const unsigned int sweeps =
-      bound->identify_active_set(tangent,
-                                 newton_rhs,
-                                 x,
-                                 *step.old_solution,
-                                 constraints,
-                                 direct_solver,
-                                 max_active_set_sweeps);
-    n_on_bound = bound->active_size();
-    verbose_out << "        active set on the s block: " << n_first << " -> "
-                << n_on_bound << " DoFs in " << sweeps << " sweeps"
-                << std::endl;
-    bound->constrain(tangent, newton_rhs, x, *step.old_solution);
-    bound->to_complementarity(residual, x, *step.old_solution, constraints);
-    bound_applied = true;
+    for (BoundState &b : bounds)
+      if (b.engaged)
+        {
+          FieldBound &bound = b.bound;
+          bound.record_diagonal(tangent);
+          const types::global_dof_index n_first = bound.update_active_set(
+            x, *step.old_solution, residual, constraints);
+          const unsigned int sweeps =
+            bound.identify_active_set(tangent,
+                                      newton_rhs,
+                                      x,
+                                      *step.old_solution,
+                                      constraints,
+                                      direct_solver,
+                                      max_active_set_sweeps);
+          b.n_on_bound = bound.active_size();
+          verbose_out << "        active set on the " << bound.field_name()
+                      << " block: " << n_first << " -> " << b.n_on_bound
+                      << " DoFs in " << sweeps << " sweeps" << std::endl;
+          bound.constrain(tangent, newton_rhs, x, *step.old_solution);
+          bound.to_complementarity(residual,
+                                   x,
+                                   *step.old_solution,
+                                   constraints);
+          b.applied = true;
+        }
+  }
+
+
+
+  bool
+  CoupledProblem::any_bound_engaged() const
+  {
+    for (const BoundState &b : bounds)
+      if (b.engaged)
+        return true;
+    return false;
   }
 
 
@@ -334,9 +352,9 @@ namespace DuctileContact
     targets.branch_record = &branches;
     targets.branches      = Branches::record;
     last_info             = assemble(targets);
-    bound_applied         = false;
-    if (bound_engaged)
-      apply_bound(x);
+    for (BoundState &b : bounds)
+      b.applied = false;
+    apply_bounds(x);
     return evaluation(last_info);
   }
 
@@ -354,8 +372,12 @@ namespace DuctileContact
     targets.branch_record = &branches;
     targets.branches      = Branches::frozen;
     last_info             = assemble(targets);
-    if (bound_engaged)
-      bound->to_complementarity(residual, x, *step.old_solution, constraints);
+    for (const BoundState &b : bounds)
+      if (b.engaged)
+        b.bound.to_complementarity(residual,
+                                   x,
+                                   *step.old_solution,
+                                   constraints);
     return evaluation(last_info);
   }
 
@@ -364,8 +386,8 @@ namespace DuctileContact
   bool
   CoupledProblem::keeps_tangent() const
   {
-    // The bound's rows are those of the iterate's active set.
-    return !bound_engaged;
+    // The bounds' rows are those of the iterate's active sets.
+    return !any_bound_engaged();
   }
 
 
@@ -384,28 +406,36 @@ namespace DuctileContact
   CoupledProblem::converged(const Vector              &x,
                             const std::vector<double> &tolerances)
   {
-    if (bound && !bound_engaged)
-      {
-        // The tangent in memory is the current iterate's (the trial's too:
-        // the line search assembles residuals only).
-        bound->record_diagonal(tangent);
-        Vector c = residual;
-        bound->to_complementarity(c, x, *step.old_solution, constraints);
-        if (c.block(Block::phase_field).l2_norm() >
-            tolerances[Block::phase_field])
-          {
-            bound_engaged = true;
-            verbose_out << "        s falls below its last accepted "
-                           "value or rises above 1: the bound s_n <= s <= 1 "
-                           "is engaged"
-                        << std::endl;
-            return false;
-          }
-      }
+    // The tangent in memory is the current iterate's (the trial's too: the
+    // line search assembles residuals only).
+    bool engaged_now = false;
+    for (BoundState &b : bounds)
+      if (!b.engaged)
+        {
+          const unsigned int block = b.bound.block();
+          b.bound.record_diagonal(tangent);
+          Vector c = residual;
+          b.bound.to_complementarity(c, x, *step.old_solution, constraints);
+          if (c.block(block).l2_norm() > tolerances[block])
+            {
+              b.engaged   = true;
+              engaged_now = true;
+              verbose_out << "        " << b.bound.field_name()
+                          << " falls below its last accepted value"
+                          << (block == Block::phase_field ? " or rises above 1"
+                                                          : "")
+                          << ": its bound is engaged" << std::endl;
+            }
+        }
+    if (engaged_now)
+      return false;
     accepted_info = last_info;
     // Not from the solve at t = 0 that relaxes an initial crack: the first
     // load step, a jump of the prescribed values from rest, starts free.
-    bound_last_solve = bound_engaged && n_on_bound > 0 && step.t > 0.;
+    bound_last_solve.fill(false);
+    for (const BoundState &b : bounds)
+      bound_last_solve[b.bound.block()] =
+        b.engaged && b.n_on_bound > 0 && step.t > 0.;
     return true;
   }
 
@@ -414,8 +444,11 @@ namespace DuctileContact
   std::vector<double>
   CoupledProblem::modify_linear_system(const Vector &x)
   {
-    if (bound_engaged && !bound_applied) // engaged by converged()
-      apply_bound(x);
+    bool pending = false; // engaged by converged()
+    for (const BoundState &b : bounds)
+      pending = pending || (b.engaged && !b.applied);
+    if (pending)
+      apply_bounds(x);
     return residual_norms();
   }
 
@@ -432,9 +465,13 @@ namespace DuctileContact
   std::string
   CoupledProblem::describe() const
   {
-    return bound_engaged
-             ? "s held on its bound at " + std::to_string(n_on_bound) + " DoFs"
-             : std::string();
+    std::string text;
+    for (const BoundState &b : bounds)
+      if (b.engaged)
+        text += (text.empty() ? "" : ", ") + b.bound.field_name() +
+                " held on its bound at " + std::to_string(b.n_on_bound) +
+                " DoFs";
+    return text;
   }
 
 
@@ -444,8 +481,9 @@ namespace DuctileContact
   {
     tangent.vmult(k_d, d);
     constraints.set_zero(k_d);
-    if (bound_applied)
-      bound->remove_active_rows(k_d);
+    for (const BoundState &b : bounds)
+      if (b.applied)
+        b.bound.remove_active_rows(k_d);
   }
 
 
@@ -458,8 +496,9 @@ namespace DuctileContact
     targets.branch_record = &branches;
     targets.branches      = Branches::frozen;
     assemble(targets);
-    if (bound_applied)
-      bound->remove_active_rows(residual);
+    for (const BoundState &b : bounds)
+      if (b.applied)
+        b.bound.remove_active_rows(residual);
     r = residual;
   }
 } // namespace DuctileContact

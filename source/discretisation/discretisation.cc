@@ -5,6 +5,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 
+#include <ductile_contact/discretisation/bernstein_element.h>
 #include <ductile_contact/discretisation/discretisation.h>
 
 namespace DuctileContact
@@ -14,7 +15,8 @@ namespace DuctileContact
   Discretisation::Discretisation(
     const parallel::distributed::Triangulation<dim> &tria,
     const unsigned int                               degree,
-    const std::map<types::material_id, BodyFields>  &bodies)
+    const std::map<types::material_id, BodyFields>  &bodies,
+    const FieldBasis                                 phase_field_basis)
       : triangulation(tria)
       , degree(degree)
       , bodies(bodies)
@@ -25,14 +27,22 @@ namespace DuctileContact
       {
         const bool with_alpha = fields(index).hardening;
         const bool with_s     = fields(index).phase_field;
-        const auto scalar =
-          [&](const bool present) -> std::unique_ptr<FiniteElement<dim>> {
+        const auto scalar     = [&](const bool       present,
+                                const FieldBasis field_basis)
+          -> std::unique_ptr<FiniteElement<dim>> {
+          if (present && field_basis == FieldBasis::bernstein)
+            return std::make_unique<BernsteinElement>(degree);
           if (present)
             return std::make_unique<FE_Q<dim>>(degree);
           return std::make_unique<FE_Nothing<dim>>();
         };
-        fe_collection.push_back(FESystem<dim>(
-          FE_Q<dim>(degree), dim, *scalar(with_alpha), 1, *scalar(with_s), 1));
+        fe_collection.push_back(
+          FESystem<dim>(FE_Q<dim>(degree),
+                        dim,
+                        *scalar(with_alpha, FieldBasis::lagrange),
+                        1,
+                        *scalar(with_s, phase_field_basis),
+                        1));
         quadrature.push_back(QGauss<dim>(degree + 1));
         face_quadrature.push_back(QGauss<dim - 1>(degree + 1));
 

@@ -1,5 +1,6 @@
 #include <deal.II/base/function_parser.h>
 
+#include <ductile_contact/discretisation/bernstein_element.h>
 #include <ductile_contact/phase_field/initial_crack.h>
 
 #include <algorithm>
@@ -41,13 +42,21 @@ namespace DuctileContact
               owned.is_element(indices[i]))
             {
               // The node of this DoF, from the base element (FESystem's
-              // own support points need every base to have them).
-              const auto       base = fe.system_to_base_index(i);
+              // own support points need every base to have them); for a
+              // Bernstein coefficient its Greville point (the coefficient
+              // is the value there, the quasi-interpolant that keeps
+              // 0 <= s <= 1).
+              const auto                base = fe.system_to_base_index(i);
+              const FiniteElement<dim> &scalar =
+                fe.base_element(base.first.first);
+              const auto *bernstein =
+                dynamic_cast<const BernsteinElement *>(&scalar);
               const Point<dim> X =
                 discretisation.mapping[0].transform_unit_to_real_cell(
                   cell,
-                  fe.base_element(base.first.first)
-                    .unit_support_point(base.second));
+                  bernstein != nullptr
+                    ? bernstein->greville_points()[base.second]
+                    : scalar.unit_support_point(base.second));
               u(indices[i]) = std::clamp(crack->second->value(X), 0., 1.);
             }
       }

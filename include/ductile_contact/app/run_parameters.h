@@ -6,6 +6,7 @@
 #include <ductile_contact/contact/contact_parameters.h>
 #include <ductile_contact/coupled/coupling_parameters.h>
 #include <ductile_contact/discretisation/boundary_condition.h>
+#include <ductile_contact/discretisation/field_basis.h>
 #include <ductile_contact/materials/body_parameters.h>
 #include <ductile_contact/mesh/mesh_parameters.h>
 #include <ductile_contact/output/output_parameters.h>
@@ -38,7 +39,8 @@ namespace DuctileContact
   struct RunParameters
   {
     MeshParameters mesh;
-    unsigned int   fe_degree = 2;
+    unsigned int   fe_degree         = 2;
+    FieldBasis     phase_field_basis = FieldBasis::lagrange;
     // deques: entries are bound by address, so elements must not move.
     std::deque<BodyParameters>    bodies;
     std::deque<BoundaryCondition> boundary_conditions;

@@ -82,6 +82,10 @@ namespace DuctileContact
     double min_plastic_dissipation = std::numeric_limits<double>::max();
     /// Smallest alpha at a quadrature point (+max if none).
     double min_alpha = std::numeric_limits<double>::max();
+    /// Largest s at a quadrature point (lowest if none): the field between
+    /// the nodes, where the bound on the DoFs holds only with the Bernstein
+    /// basis.
+    double max_s_point = std::numeric_limits<double>::lowest();
     /// Crack measures of the pass (commit: of the accepted state): the
     /// regularised crack area Gamma_l(s) = int gamma(s, grad s, Hess s) dV
     /// [m^2] (the fracture energy over g_c, body by body), the volume where
@@ -132,6 +136,7 @@ namespace DuctileContact
     double plastic_energy_release_increment = 0.;
     double min_plastic_dissipation = std::numeric_limits<double>::max();
     double min_alpha               = std::numeric_limits<double>::max();
+    double max_s_point             = std::numeric_limits<double>::lowest();
     double crack_area              = 0.;
     double cracked_volume          = 0.;
     /// The box of the cracked points (meaningful where cracked_volume > 0).

@@ -8,17 +8,17 @@
 
 #include <ductile_contact/assembly/system_assembler.h>
 #include <ductile_contact/coupled/coupling_parameters.h>
+#include <ductile_contact/coupled/field_bound.h>
 #include <ductile_contact/discretisation/boundary_condition.h>
 #include <ductile_contact/discretisation/discretisation.h>
-#include <ductile_contact/phase_field/phase_field_bound.h>
 #include <ductile_contact/solver/nonlinear_problem.h>
 
 #include <array>
 #include <cstdint>
 #include <deque>
 #include <memory>
-#include <optional>
 #include <string>
+#include <vector>
 
 namespace DuctileContact
 {
@@ -30,8 +30,9 @@ namespace DuctileContact
    * (sparsity pattern with the C0IP and contact couplings, tangent,
    * right-hand side, residual, internal force) and combines the bulk cells
    * and C0IP faces (SystemAssembler), the contact pairs (ContactProblem,
-   * if any) and the irreversibility bound s_n <= s <= 1 (PhaseFieldBound, if
-   * Coupling/Irreversibility asks for it).
+   * if any) and the bounds on the DoFs (FieldBound): s_n <= s <= 1 if
+   * Coupling/Irreversibility asks for it, alpha_n <= alpha if
+   * Coupling/Plastic strain bound does.
    *
    * Prescribed displacements enter through the Newton constraints
    * (make_newton_constraints()): each iterate's update moves the boundary
@@ -43,12 +44,12 @@ namespace DuctileContact
    * load carried); for alpha and s, rtol S_b (S_b the local terms at
    * alpha = 1 or s = 1, AssemblyInfo::residual_scale).
    *
-   * The bound is engaged lazily: Newton iterates without it, and only if
+   * Each bound is engaged lazily: Newton iterates without it, and only if
    * its converged state violates the bound's KKT conditions (the
-   * complementarity residual C of PhaseFieldBound above the s tolerance)
-   * is the active set switched on (converged() returns false); from then
-   * on the s rows of the norms are C, and every tangent assembly refines
-   * the active set on the s block (PhaseFieldBound::identify_active_set)
+   * complementarity residual C of FieldBound above the block's tolerance)
+   * is its active set switched on (converged() returns false); from then
+   * on the block's rows of the norms are C, and every tangent assembly
+   * refines the active set on the block (FieldBound::identify_active_set)
    * before the rows of the set are replaced by the bound. Engaged from the
    * start, the active set of the first, far-off iterates holds DoFs that
    * the solution leaves free, and steps that never touch the bound took 5
@@ -160,10 +161,14 @@ namespace DuctileContact
     std::vector<double>
     residual_norms() const;
 
-    /// The active set of the bound at @p x, refined on the s block, put
-    /// into the fresh tangent, right-hand side and residual.
+    /// The active sets of the engaged bounds at @p x, each refined on its
+    /// block, put into the fresh tangent, right-hand side and residual.
     void
-    apply_bound(const Vector &x);
+    apply_bounds(const Vector &x);
+
+    /// Whether a bound of the current solve is engaged.
+    bool
+    any_bound_engaged() const;
 
     const Discretisation &discretisation;
     /// Why the prescribed values of the current iterate are unusable ("":
@@ -192,14 +197,19 @@ namespace DuctileContact
     /// search and the tangent check).
     BranchRecord branches;
 
-    /// The bound of the current solve (if it is bounded).
-    std::optional<PhaseFieldBound> bound;
-    bool                           bound_engaged = false;
-    bool                           bound_applied = false;
-    /// The last converged solve held DoFs on the bound: the next one
-    /// engages it from its first iteration instead of first converging
-    /// without it.
-    bool                            bound_last_solve = false;
-    dealii::types::global_dof_index n_on_bound       = 0;
+    /// A bound of the current solve and where it stands.
+    struct BoundState
+    {
+      FieldBound                      bound;
+      bool                            engaged    = false;
+      bool                            applied    = false;
+      dealii::types::global_dof_index n_on_bound = 0;
+    };
+    /// The bounds of the current solve (those that are on).
+    std::vector<BoundState> bounds;
+    /// Per block: the last converged solve held DoFs on its bound, so the
+    /// next one engages it from its first iteration instead of first
+    /// converging without it.
+    std::array<bool, Block::n_blocks> bound_last_solve{{false, false, false}};
   };
 } // namespace DuctileContact

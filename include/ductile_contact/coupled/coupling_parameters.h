@@ -25,7 +25,7 @@ namespace DuctileContact
    *
    * Irreversibility of s (doc/model.md section 2): `history` (the crack driver
    * uses the history maximum of psi^+), `bound` (s_i >= s_n,i at every
-   * phase-field DoF, PhaseFieldBound, with the driver from the current
+   * phase-field DoF, FieldBound, with the driver from the current
    * psi^+) or `history and bound` (default: both).
    */
   /// Coupling/Strategy.
