@@ -1,6 +1,6 @@
 // The coarse tearing scene of block_on_plate_tearing.cc (the same checks)
 // with the phase field in the Bernstein basis (Finite elements/Phase-field
-// basis = Bernstein): the box s_n <= s <= 1 on the Bernstein coefficients
+// basis = Bernstein, as prm/block_on_plate_tearing.prm sets it): the box s_n <= s <= 1 on the Bernstein coefficients
 // holds at every point, so s <= 1 at every quadrature point as well (the
 // Lagrange field of block_on_plate_tearing reaches 1.0203 there). The same
 // peak reaction to 5 digits (the tear starts after it); the tear's path
