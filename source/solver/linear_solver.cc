@@ -219,7 +219,9 @@ namespace DuctileContact
         << name_of(factor_precision_names(), parameters.precision)
         << " precision): " << s.analyses << " analyses " << s.analysis_time
         << " s, " << s.factorisations << " factorisations " << s.factor_time
-        << " s, " << s.solves << " solves " << s.solve_time << " s; "
+        << " s, " << s.solves << " solves " << s.solve_time << " s ("
+        << (s.solves > 0 ? s.bytes_sent / s.solves : 0.)
+        << " bytes of solution sent per solve by this rank); "
         << s.factor_entries << " entries in the last factors; " << failed_reuses
         << " GMRES runs on old factors missed the tolerance ("
         << failed_reuse_solves << " solves)";

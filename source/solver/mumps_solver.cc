@@ -5,10 +5,13 @@
 #include <ductile_contact/solver/mumps_solver.h>
 
 #include <algorithm>
+#include <array>
 #include <dmumps_c.h>
+#include <limits>
 #include <metis.h>
 #include <smumps_c.h>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace DuctileContact
 {
@@ -51,7 +54,9 @@ namespace DuctileContact
     bool               single = false;
     DMUMPS_STRUC_C     d{};
     SMUMPS_STRUC_C     s{};
-    std::vector<float> values, rhs;
+    std::vector<float> values;
+    /// Single precision: the right-hand side and solution in MUMPS's type.
+    std::vector<float> rhs_loc, sol_loc;
 
     template <typename F>
     void
@@ -132,11 +137,11 @@ namespace DuctileContact
       icntl(id, 2)  = -1;
       icntl(id, 3)  = -1;
       icntl(id, 4)  = 0;
-      icntl(id, 5)  = 0; // assembled matrix
-      icntl(id, 18) = 3; // distributed triplets
-      icntl(id, 20) = 0; // dense right-hand side on rank 0
-      icntl(id, 21) = 0; // solution on rank 0
-      icntl(id, 28) = 1; // sequential analysis (the orderings we have)
+      icntl(id, 5)  = 0;  // assembled matrix
+      icntl(id, 18) = 3;  // distributed triplets
+      icntl(id, 20) = 10; // dense right-hand side, distributed (owned rows)
+      icntl(id, 21) = 1;  // solution distributed as MUMPS holds it
+      icntl(id, 28) = 1;  // sequential analysis (the orderings we have)
       icntl(id, 7)  = mumps_ordering(ordering);
       icntl(id, 14) = 30; // work space margin over the analysis' estimate, %
     });
@@ -418,28 +423,11 @@ namespace DuctileContact
         for (int r = 0; r < A.NumMyRows(); ++r)
           owned_rows[r] =
             static_cast<int>(TrilinosWrappers::global_row_index(A, r));
-        const int rank    = Utilities::MPI::this_mpi_process(comm);
-        const int size    = Utilities::MPI::n_mpi_processes(comm);
-        const int n_owned = A.NumMyRows();
-        counts.assign(size, 0);
-        offsets.assign(size + 1, 0);
-        MPI_Gather(&n_owned, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-        for (int p = 0; p < size; ++p)
-          offsets[p + 1] = offsets[p] + counts[p];
-        gathered_rows.resize(rank == 0 ? offsets[size] : 0);
-        MPI_Gatherv(owned_rows.data(),
-                    n_owned,
-                    MPI_INT,
-                    gathered_rows.data(),
-                    counts.data(),
-                    offsets.data(),
-                    MPI_INT,
-                    0,
-                    comm);
-        gathered.resize(gathered_rows.size());
-        rhs.resize(rank == 0 ? n_global : 0);
-        mumps->rhs.resize(mumps->single ? rhs.size() : 0);
-
+        irhs_loc.resize(owned_rows.size());
+        for (std::size_t r = 0; r < owned_rows.size(); ++r)
+          irhs_loc[r] = owned_rows[r] + 1;
+        find_row_owners();
+        const int rank = Utilities::MPI::this_mpi_process(comm);
         if (ordering == DirectOrdering::metis)
           {
             compute_metis_order();
@@ -464,13 +452,126 @@ namespace DuctileContact
     else
       mumps->d.a_loc = value.data();
     run(2, "factorisation");
-    factorised = true;
+    // The solution entries MUMPS will hold here (INFO(23)); their rows are
+    // known after the first solve.
+    mumps->visit([&](auto &id) {
+      solution_entries = id.info[22];
+      isol_loc.assign(std::max(solution_entries, 1), 0);
+      id.lsol_loc = static_cast<int>(isol_loc.size());
+    });
+    sol_loc.assign(isol_loc.size(), 0.);
+    mumps->sol_loc.assign(mumps->single ? isol_loc.size() : 0, 0.f);
+    exchange.valid = false;
+    factorised     = true;
     ++stats.factorisations;
     stats.factor_time += timer.wall_time();
     mumps->visit([&](auto &id) {
       stats.factor_entries = static_cast<double>(
         infog(id, 29) >= 0 ? infog(id, 29) : -1.e6 * infog(id, 29));
     });
+  }
+
+
+
+  void
+  MumpsSolver::find_row_owners()
+  {
+    // The owned rows as runs of consecutive numbers [first, end), of every
+    // rank: a few runs per rank (one per block of the system).
+    std::vector<int> runs;
+    for (std::size_t r = 0; r < owned_rows.size(); ++r)
+      if (r == 0 || owned_rows[r] != owned_rows[r - 1] + 1)
+        {
+          if (r > 0)
+            runs.push_back(owned_rows[r - 1] + 1);
+          runs.push_back(owned_rows[r]);
+        }
+    if (!owned_rows.empty())
+      runs.push_back(owned_rows.back() + 1);
+    const std::vector<std::vector<int>> all =
+      Utilities::MPI::all_gather(comm, runs);
+    row_runs.clear();
+    for (unsigned int p = 0; p < all.size(); ++p)
+      for (std::size_t k = 0; k + 1 < all[p].size(); k += 2)
+        row_runs.push_back(
+          std::array<int, 3>{{all[p][k], all[p][k + 1], static_cast<int>(p)}});
+    std::sort(row_runs.begin(), row_runs.end());
+  }
+
+
+
+  int
+  MumpsSolver::owner_of(const int row) const
+  {
+    const auto run =
+      std::upper_bound(row_runs.begin(),
+                       row_runs.end(),
+                       std::array<int, 3>{{row,
+                                           std::numeric_limits<int>::max(),
+                                           std::numeric_limits<int>::max()}});
+    Assert(run != row_runs.begin() && row < (*std::prev(run))[1],
+           ExcInternalError());
+    return (*std::prev(run))[2];
+  }
+
+
+
+  void
+  MumpsSolver::plan_exchange()
+  {
+    // Where each solution entry of this rank goes (its row's owner), and
+    // where each entry that arrives belongs among the owned rows.
+    const int size = Utilities::MPI::n_mpi_processes(comm);
+    exchange.send_counts.assign(size, 0);
+    std::vector<int> owner(solution_entries);
+    for (int k = 0; k < solution_entries; ++k)
+      ++exchange.send_counts[owner[k] = owner_of(isol_loc[k] - 1)];
+    exchange.send_offsets.assign(size + 1, 0);
+    for (int p = 0; p < size; ++p)
+      exchange.send_offsets[p + 1] =
+        exchange.send_offsets[p] + exchange.send_counts[p];
+    exchange.pack_order.resize(solution_entries);
+    std::vector<int> fill(exchange.send_offsets.begin(),
+                          exchange.send_offsets.end() - 1);
+    for (int k = 0; k < solution_entries; ++k)
+      exchange.pack_order[fill[owner[k]]++] = k;
+
+    exchange.receive_counts.assign(size, 0);
+    MPI_Alltoall(exchange.send_counts.data(),
+                 1,
+                 MPI_INT,
+                 exchange.receive_counts.data(),
+                 1,
+                 MPI_INT,
+                 comm);
+    exchange.receive_offsets.assign(size + 1, 0);
+    for (int p = 0; p < size; ++p)
+      exchange.receive_offsets[p + 1] =
+        exchange.receive_offsets[p] + exchange.receive_counts[p];
+    std::vector<int> rows(solution_entries),
+      arriving(exchange.receive_offsets[size]);
+    for (std::size_t k = 0; k < rows.size(); ++k)
+      rows[k] = isol_loc[exchange.pack_order[k]] - 1;
+    MPI_Alltoallv(rows.data(),
+                  exchange.send_counts.data(),
+                  exchange.send_offsets.data(),
+                  MPI_INT,
+                  arriving.data(),
+                  exchange.receive_counts.data(),
+                  exchange.receive_offsets.data(),
+                  MPI_INT,
+                  comm);
+    std::unordered_map<int, int> local;
+    local.reserve(owned_rows.size());
+    for (std::size_t r = 0; r < owned_rows.size(); ++r)
+      local.emplace(owned_rows[r], static_cast<int>(r));
+    exchange.positions.resize(arriving.size());
+    for (std::size_t k = 0; k < arriving.size(); ++k)
+      exchange.positions[k] = local.at(arriving[k]);
+    AssertThrow(arriving.size() == owned_rows.size(),
+                ExcMessage("MUMPS's distributed solution does not cover "
+                           "every owned row once"));
+    exchange.valid = true;
   }
 
 
@@ -483,48 +584,53 @@ namespace DuctileContact
                   x.MyLength() == b.MyLength(),
                 ExcMessage("vectors of another layout than the matrix"));
     Timer     timer;
-    const int rank = Utilities::MPI::this_mpi_process(comm);
+    const int n_owned = b.MyLength();
 
-    MPI_Gatherv(b[0],
-                b.MyLength(),
-                MPI_DOUBLE,
-                gathered.data(),
-                counts.data(),
-                offsets.data(),
-                MPI_DOUBLE,
-                0,
-                comm);
-    if (rank == 0)
-      for (std::size_t k = 0; k < gathered.size(); ++k)
-        rhs[gathered_rows[k]] = gathered[k];
-
+    // Each rank hands over its own rows and gets back the solution rows
+    // MUMPS holds (ICNTL(20) = 10, ICNTL(21) = 1): no rank gathers a
+    // global vector.
     if (mumps->single)
       {
-        mumps->rhs.assign(rhs.begin(), rhs.end());
-        mumps->s.rhs = (rank == 0 ? mumps->rhs.data() : nullptr);
+        mumps->rhs_loc.assign(b[0], b[0] + n_owned);
+        mumps->s.rhs_loc = mumps->rhs_loc.data();
+        mumps->s.sol_loc = mumps->sol_loc.data();
       }
     else
-      mumps->d.rhs = (rank == 0 ? rhs.data() : nullptr);
+      {
+        mumps->d.rhs_loc = b[0];
+        mumps->d.sol_loc = sol_loc.data();
+      }
     mumps->visit([&](auto &id) {
-      id.nrhs = 1;
-      id.lrhs = n_global;
+      id.nrhs     = 1;
+      id.nloc_rhs = n_owned;
+      id.lrhs_loc = std::max(n_owned, 1);
+      id.irhs_loc = irhs_loc.data();
+      id.isol_loc = isol_loc.data();
     });
     run(3, "solve");
-    if (mumps->single && rank == 0)
-      std::copy(mumps->rhs.begin(), mumps->rhs.end(), rhs.begin());
+    if (mumps->single)
+      std::copy(mumps->sol_loc.begin(), mumps->sol_loc.end(), sol_loc.begin());
 
-    if (rank == 0)
-      for (std::size_t k = 0; k < gathered.size(); ++k)
-        gathered[k] = rhs[gathered_rows[k]];
-    MPI_Scatterv(gathered.data(),
-                 counts.data(),
-                 offsets.data(),
-                 MPI_DOUBLE,
-                 x[0],
-                 x.MyLength(),
-                 MPI_DOUBLE,
-                 0,
-                 comm);
+    if (!exchange.valid)
+      plan_exchange();
+    std::vector<double> packed(exchange.pack_order.size()),
+      arriving(exchange.positions.size());
+    for (std::size_t k = 0; k < packed.size(); ++k)
+      packed[k] = sol_loc[exchange.pack_order[k]];
+    MPI_Alltoallv(packed.data(),
+                  exchange.send_counts.data(),
+                  exchange.send_offsets.data(),
+                  MPI_DOUBLE,
+                  arriving.data(),
+                  exchange.receive_counts.data(),
+                  exchange.receive_offsets.data(),
+                  MPI_DOUBLE,
+                  comm);
+    for (std::size_t k = 0; k < arriving.size(); ++k)
+      x[0][exchange.positions[k]] = arriving[k];
+    const int rank = Utilities::MPI::this_mpi_process(comm);
+    stats.bytes_sent +=
+      sizeof(double) * (packed.size() - exchange.send_counts[rank]);
     ++stats.solves;
     stats.solve_time += timer.wall_time();
   }

@@ -4,6 +4,7 @@
 
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
+#include <array>
 #include <memory>
 #include <mpi.h>
 #include <string>
@@ -14,7 +15,12 @@ namespace DuctileContact
   /**
    * A sparse direct solver for a distributed Epetra matrix through the C
    * interface of MUMPS (the matrix handed over distributed, one triplet per
-   * owned entry; right-hand side and solution gathered on rank 0).
+   * owned entry; right-hand side and solution distributed: each rank hands
+   * over its owned rows, MUMPS returns the solution rows it holds, and one
+   * all-to-all exchange brings them to their owners, so that no rank holds
+   * a global vector. The analysis is sequential (Debian's MUMPS has no
+   * parallel ordering): with the METIS ordering, rank 0 gathers the
+   * pattern once per analysis).
    *
    * The analysis (ordering and symbolic factorisation) depends only on the
    * sparsity pattern; it is done when factorize() sees a pattern other than
@@ -41,6 +47,8 @@ namespace DuctileContact
       double       solve_time     = 0.;
       /// Entries of the factors (MUMPS INFOG(29)) of the last one.
       double factor_entries = 0.;
+      /// Bytes of solution entries this rank sent to other ranks.
+      double bytes_sent = 0.;
     };
 
     MumpsSolver(MPI_Comm        comm,
@@ -140,12 +148,39 @@ namespace DuctileContact
     bool                analysed   = false;
     bool                factorised = false;
 
-    /// Global rows owned here (in the order of the vectors' local indices),
-    /// and on rank 0 the counts and offsets of every rank's rows.
-    std::vector<int>    owned_rows;
-    std::vector<int>    counts, offsets, gathered_rows;
-    std::vector<double> gathered, rhs;
-    std::vector<int>    pivot_order;
+    /// The runs [first, end) of consecutive global rows owned by each rank
+    /// (first, end, rank), sorted: who owns a row, for the solution
+    /// exchange.
+    void
+    find_row_owners();
+    int
+    owner_of(int row) const;
+
+    /// The exchange plan of the distributed solution (isol_loc, known after
+    /// the first solve of a factorisation).
+    void
+    plan_exchange();
+
+    /// Global rows owned here (0-based, in the order of the vectors' local
+    /// indices) and MUMPS's 1-based copy of them (IRHS_LOC).
+    std::vector<int>                owned_rows, irhs_loc;
+    std::vector<std::array<int, 3>> row_runs;
+    /// The solution entries MUMPS holds here (SOL_LOC) and their global
+    /// rows, 1-based (ISOL_LOC).
+    std::vector<double> sol_loc;
+    std::vector<int>    isol_loc;
+    /// How many of them there are (INFO(23) of the factorisation).
+    int solution_entries = 0;
+    /// From MUMPS's solution rows to the owners' rows: the entries sent to
+    /// each rank (counts, offsets, and the order of the local entries),
+    /// and the local row of each entry that arrives.
+    struct Exchange
+    {
+      std::vector<int> send_counts, send_offsets, pack_order;
+      std::vector<int> receive_counts, receive_offsets, positions;
+      bool             valid = false;
+    } exchange;
+    std::vector<int> pivot_order;
 
     Statistics stats;
   };
