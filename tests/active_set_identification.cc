@@ -25,9 +25,9 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <ductile_contact/coupled/field_bound.h>
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/phase_field/c0ip.h>
-#include <ductile_contact/coupled/field_bound.h>
 
 #include "tests.h"
 
@@ -167,8 +167,9 @@ main(int argc, char **argv)
   const auto n_first_by_hand = Utilities::MPI::sum(first.n_elements(), comm);
   const auto [first_free, first_held] = kkt(K_ss, b_s, first);
 
+  MumpsSolver        direct(comm, Factorisation::lu, DirectOrdering::metis);
   const unsigned int sweeps = bound.identify_active_set(
-    K, b, zero, zero, constraints, "Amesos_Klu", max_sweeps);
+    K, b, zero, zero, constraints, direct, max_sweeps);
   const auto n_final = bound.active_size();
   // The refined set: held DoFs are those whose rows identify_active_set
   // replaced; recover them through remove_active_rows on a vector of ones.

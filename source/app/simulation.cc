@@ -126,20 +126,18 @@ namespace DuctileContact
       contact = std::make_unique<ContactProblem>(parameters.contact_pairs,
                                                  *discretisation,
                                                  bodies);
-    problem =
-      std::make_unique<CoupledProblem>(*discretisation,
-                                       *assembler,
-                                       parameters.boundary_conditions,
-                                       parameters.coupling,
-                                       parameters.linear_solver.amesos_name(),
-                                       force_scale,
-                                       verbose_out,
-                                       timer,
-                                       contact.get());
-    newton = std::make_unique<NewtonSolver>(parameters.newton,
+    problem = std::make_unique<CoupledProblem>(*discretisation,
+                                               *assembler,
+                                               parameters.boundary_conditions,
+                                               parameters.coupling,
+                                               force_scale,
+                                               verbose_out,
+                                               timer,
+                                               contact.get());
+    newton  = std::make_unique<NewtonSolver>(parameters.newton,
                                             *linear_solver,
                                             NewtonMonitor{verbose_out, timer});
-    solver = std::make_unique<CoupledSolver>(
+    solver  = std::make_unique<CoupledSolver>(
       parameters.coupling, *problem, *newton, verbose_out, contact.get());
     writer = std::make_unique<SolutionWriter>(parameters.output.directory,
                                               parameters.output.format,

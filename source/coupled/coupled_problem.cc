@@ -28,7 +28,6 @@ namespace DuctileContact
     const SystemAssembler               &assembler,
     const std::deque<BoundaryCondition> &boundary_conditions,
     const CouplingParameters            &coupling,
-    const std::string                   &direct_solver,
     const double                         force_scale,
     ConditionalOStream                  &verbose_out,
     TimerOutput                         &timer,
@@ -37,11 +36,13 @@ namespace DuctileContact
       , assembler(assembler)
       , boundary_conditions(boundary_conditions)
       , coupling(coupling)
-      , direct_solver(direct_solver)
       , force_scale(force_scale)
       , verbose_out(verbose_out)
       , timer(timer)
       , contact(contact)
+      , bound_solver(discretisation.dof_handler.get_communicator(),
+                     Factorisation::lu,
+                     DirectOrdering::metis)
   {
   }
 
@@ -297,7 +298,8 @@ namespace DuctileContact
     for (BoundState &b : bounds)
       if (b.engaged)
         {
-          FieldBound &bound = b.bound;
+          TimerOutput::Scope scope(timer, "bound: active set");
+          FieldBound        &bound = b.bound;
           bound.record_diagonal(tangent);
           const types::global_dof_index n_first = bound.update_active_set(
             x, *step.old_solution, residual, constraints);
@@ -307,7 +309,7 @@ namespace DuctileContact
                                       x,
                                       *step.old_solution,
                                       constraints,
-                                      direct_solver,
+                                      bound_solver,
                                       max_active_set_sweeps);
           b.n_on_bound = bound.active_size();
           verbose_out << "        active set on the " << bound.field_name()

@@ -1,6 +1,4 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/trilinos_solver.h>
 
 #include <ductile_contact/coupled/field_bound.h>
 
@@ -99,7 +97,7 @@ namespace DuctileContact
     const TrilinosWrappers::MPI::BlockVector  &u,
     const TrilinosWrappers::MPI::BlockVector  &old,
     const AffineConstraints<double>           &constraints,
-    const std::string                         &direct_solver,
+    MumpsSolver                               &direct_solver,
     const unsigned int                         max_sweeps)
   {
     const IndexSet &owned = discretisation.owned_partitioning[block_index];
@@ -118,13 +116,13 @@ namespace DuctileContact
         K_A.copy_from(K_xx);
         rhs = b;
         hold_active_rows(K_A, rhs, x, x_n);
-        SolverControl                  control(1, 0.);
-        TrilinosWrappers::SolverDirect direct(
-          control,
-          TrilinosWrappers::SolverDirect::AdditionalData(false, direct_solver));
         try
           {
-            direct.solve(K_A, delta, rhs);
+            // The pattern of K_A is that of the block's: the solver's
+            // analysis carries over from sweep to sweep and iteration to
+            // iteration.
+            direct_solver.factorize(K_A.trilinos_matrix());
+            direct_solver.solve(delta.trilinos_vector(), rhs.trilinos_vector());
           }
         catch (const std::exception &)
           {

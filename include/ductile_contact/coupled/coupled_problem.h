@@ -62,7 +62,6 @@ namespace DuctileContact
                    const SystemAssembler               &assembler,
                    const std::deque<BoundaryCondition> &boundary_conditions,
                    const CouplingParameters            &coupling,
-                   const std::string                   &direct_solver,
                    const double                         force_scale,
                    dealii::ConditionalOStream          &verbose_out,
                    dealii::TimerOutput                 &timer,
@@ -177,7 +176,6 @@ namespace DuctileContact
     const SystemAssembler               &assembler;
     const std::deque<BoundaryCondition> &boundary_conditions;
     const CouplingParameters            &coupling;
-    const std::string                    direct_solver;
     const double                         force_scale;
     dealii::ConditionalOStream          &verbose_out;
     dealii::TimerOutput                 &timer;
@@ -205,6 +203,9 @@ namespace DuctileContact
       bool                            applied    = false;
       dealii::types::global_dof_index n_on_bound = 0;
     };
+    /// The sparse LU of the bounds' active-set sweeps (double precision,
+    /// kept so that its analysis carries over).
+    MumpsSolver bound_solver;
     /// The bounds of the current solve (those that are on).
     std::vector<BoundState> bounds;
     /// Per block: the last converged solve held DoFs on its bound, so the

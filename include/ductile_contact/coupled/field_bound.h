@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ductile_contact/discretisation/discretisation.h>
+#include <ductile_contact/solver/mumps_solver.h>
 
 #include <limits>
 #include <string>
@@ -98,7 +99,8 @@ namespace DuctileContact
      * primal-dual active set iteration of the Newton step's linearised
      * equation of the block with the other fields held: K_xx delta = -R_x
      * on the free DoFs, delta_i = x_n,i - x_i on A (one sparse LU of the
-     * block, Amesos @p direct_solver, per sweep), then A = { i : (R_x + K_xx
+     * block per sweep by @p direct_solver, whose analysis of the block's
+     * pattern carries over between calls), then A = { i : (R_x + K_xx
      * delta)_i + K_ii (x_n,i - x_i - delta_i) > 0 }, until A repeats or
      * after @p max_sweeps sweeps. Without it the coupled Newton iteration
      * learns A one coupled solve at a time: the C0IP operator has no
@@ -117,7 +119,7 @@ namespace DuctileContact
       const dealii::TrilinosWrappers::MPI::BlockVector  &u,
       const dealii::TrilinosWrappers::MPI::BlockVector  &old,
       const dealii::AffineConstraints<double>           &constraints,
-      const std::string                                 &direct_solver,
+      MumpsSolver                                       &direct_solver,
       const unsigned int                                 max_sweeps);
 
     /// |A| summed over ranks.
