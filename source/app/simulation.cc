@@ -82,6 +82,33 @@ namespace DuctileContact
 
 
   void
+  Simulation::limit_phase_field_increment(
+    const TrilinosWrappers::MPI::BlockVector &u,
+    const TrilinosWrappers::MPI::BlockVector &u_old,
+    const double                              dt,
+    StepReport                               &report) const
+  {
+    const LoadSteppingParameters &ls = parameters.load_stepping;
+    if (!has_block(Block::phase_field) || ls.max_phase_field_increment >= 1. ||
+        dt <= 1e-3 * ls.time_step)
+      return;
+    TrilinosWrappers::MPI::Vector rise = u.block(Block::phase_field);
+    rise -= u_old.block(Block::phase_field);
+    const double largest = rise.max();
+    if (largest <= ls.max_phase_field_increment)
+      return;
+    std::ostringstream s;
+    s << "s rose by " << largest
+      << " at a DoF, more than 'Load stepping/Maximum phase-field "
+         "increment' = "
+      << ls.max_phase_field_increment;
+    report.converged = false;
+    report.failure   = s.str();
+  }
+
+
+
+  void
   Simulation::setup()
   {
     create_mesh();
@@ -534,10 +561,11 @@ namespace DuctileContact
           }
         else if (last_dt > 0.)
           alternatives = predict(dt_try / last_dt, u);
-        const StepData   step_data{t + dt_try, dt_try, &old_solution, &history};
-        const StepReport report =
-          solver->solve_step(step_data, u, alternatives);
+        const StepData step_data{t + dt_try, dt_try, &old_solution, &history};
+        StepReport     report = solver->solve_step(step_data, u, alternatives);
 
+        if (report.converged)
+          limit_phase_field_increment(u, u_old, dt_try, report);
         if (!report.converged)
           {
             u                = u_old;

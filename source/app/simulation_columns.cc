@@ -166,6 +166,7 @@ namespace DuctileContact
       return std::isfinite(v) ? v : 0.;
     };
     statistics.add("newton_rate", defined(report.convergence_rate));
+    statistics.add("branch_conflicts", report.branch_conflicts);
     if (parameters.newton.check_tangent)
       statistics.add("tangent_error", defined(report.tangent_error));
     statistics.add("linear_iterations", report.linear_iterations);

@@ -86,8 +86,9 @@ namespace DuctileContact
         total.convergence_rate     = r.convergence_rate;
         if (std::isfinite(r.tangent_error))
           total.tangent_error = r.tangent_error;
-        total.info          = r.info;
-        total.augmentations = k;
+        total.info             = r.info;
+        total.augmentations    = k;
+        total.branch_conflicts = r.branch_conflicts;
         if (!r.converged)
           {
             total.failure = r.failure;
@@ -180,6 +181,7 @@ namespace DuctileContact
                              : std::array<bool, 3>{{true, true, false}});
             total.iterations += r.iterations;
             total.linear_iterations += r.linear_iterations;
+            total.branch_conflicts += r.branch_conflicts;
             if (std::isfinite(r.tangent_error))
               total.tangent_error = r.tangent_error;
             if (!r.converged)

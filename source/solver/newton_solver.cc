@@ -354,6 +354,9 @@ namespace DuctileContact
     // tolerance. prm/sent_coarse.prm's crack phase stalled without either
     // rule (benchmarks/performance/results.md).
     bool fast = true;
+    // Points that disagreed with the branches of a state that met the
+    // tolerances with them (0: none such state yet in this step).
+    unsigned int conflicting_points = 0;
     for (unsigned int it = 0;; ++it)
       {
         const bool         pending = problem.begin_iteration(x);
@@ -483,6 +486,30 @@ namespace DuctileContact
         if (!still_pending && !branches_changed &&
             converged(problem, x, trial, report))
           return report;
+        // A state that meets the tolerances with its tangent's branches
+        // while its own differ at some points, for the second time in the
+        // step at as many points: Newton alternates between the branches of
+        // points on their switch, where no state agrees with either. It is
+        // accepted as solved (doc/model.md section 6.2).
+        bool within = true;
+        for (unsigned int b = 0; b < tol.size(); ++b)
+          within = within && trial.norms[b] <= tol[b];
+        if (!still_pending && branches_changed && within)
+          {
+            if (trial.branch_changes == conflicting_points &&
+                converged(problem, x, trial, report))
+              {
+                monitor.out << "        the branches alternate at "
+                            << conflicting_points
+                            << " points on their switch: the state that "
+                               "meets the tolerances with its tangent's "
+                               "branches is accepted"
+                            << std::endl;
+                report.branch_conflicts = conflicting_points;
+                return report;
+              }
+            conflicting_points = trial.branch_changes;
+          }
         if (it + 1 == parameters.max_iterations)
           {
             report.failure = "no convergence in " + std::to_string(it + 1) +

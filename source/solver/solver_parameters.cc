@@ -56,6 +56,16 @@ namespace DuctileContact
       "steps with accepted tiny ones for ever, each above the Minimum time "
       "step. Counted over the whole run, not per step. 0: never.",
       Patterns::Integer(0));
+    prm.add_parameter(
+      "Maximum phase-field increment",
+      max_phase_field_increment,
+      "A converged step in which s rose by more than this at some DoF is cut "
+      "back like a failed one [-]: the crack's path and the energy balance "
+      "are first order in the step, and a crack that runs through a few "
+      "elements in one step leaves an error of the size of that step in "
+      "both. With a crack viscosity the rise shrinks with the step; the "
+      "limit is not applied below 1e-3 of the Time step. 1: no limit.",
+      Patterns::Double(0., 1.));
     add_option(
       prm,
       "Predictor",
@@ -95,6 +105,10 @@ namespace DuctileContact
                 "Load stepping/Time step",
                 Utilities::to_string(time_step),
                 "it must be positive");
+    check_input(max_phase_field_increment > 0.,
+                "Load stepping/Maximum phase-field increment",
+                Utilities::to_string(max_phase_field_increment),
+                "it must be positive (1: no limit)");
     check_input(minimum_time_step > 0. && minimum_time_step <= time_step,
                 "Load stepping/Minimum time step",
                 Utilities::to_string(minimum_time_step),

@@ -137,6 +137,15 @@ namespace DuctileContact
     /// Whether block @p b has unknowns.
     bool
     has_block(const unsigned int b) const;
+    /// Marks the converged step from @p u_old to @p u (increment @p dt) as
+    /// failed in @p report when s rose by more than Load stepping/Maximum
+    /// phase-field increment at a DoF.
+    void
+    limit_phase_field_increment(
+      const dealii::TrilinosWrappers::MPI::BlockVector &u,
+      const dealii::TrilinosWrappers::MPI::BlockVector &u_old,
+      const double                                      dt,
+      StepReport                                       &report) const;
     void
     write_output(const unsigned int step, const double t);
     /// Commits the accepted state #u of @p step_data (the step started

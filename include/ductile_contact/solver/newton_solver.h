@@ -30,6 +30,10 @@ namespace DuctileContact
     /// (Newton/Check tangent): the one nearest the solution.
     double      tangent_error = std::numeric_limits<double>::quiet_NaN();
     std::string failure;
+    /// Points whose own branch differs from the one the accepted state was
+    /// solved with (0 unless the state was accepted on a branch cycle,
+    /// NewtonSolver::solve()).
+    unsigned int branch_conflicts = 0;
   };
 
   /// Where Newton reports: detail lines (verbosity 2) and its timer

@@ -48,6 +48,9 @@ namespace DuctileContact
     /// Failed steps while t advances by less than 1e-3 Time step after
     /// which the run gives up (0: never; see declare()).
     unsigned int max_stalled_failures = 20;
+    /// Largest rise of s at a DoF in one step; a step above it is cut back
+    /// (1: no limit; see declare()).
+    double max_phase_field_increment = 1.;
     /// constant | linear | linear displacements | best linear: first guess
     /// of a step (see declare()).
     Predictor predictor = Predictor::constant;
