@@ -333,6 +333,81 @@ namespace DuctileContact
 
 
 
+  std::string
+  NewtonSolver::solve_for_update(NonlinearProblem &problem,
+                                 const Norms      *fast_tolerances,
+                                 const bool        chord,
+                                 unsigned int     &n_linear)
+  {
+    try
+      {
+        TimerOutput::Scope scope(monitor.timer, "linear solve");
+        delta = 0;
+        n_linear =
+          linear_solver.solve(problem.system_matrix(),
+                              delta,
+                              problem.system_rhs(),
+                              fast_tolerances != nullptr &&
+                                  problem.keeps_tangent()
+                                ? linear_accuracy(problem, *fast_tolerances)
+                                : SolveAccuracy(),
+                              chord);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        std::ostringstream s;
+        s << "the iterative linear solver did not converge in " << e.last_step
+          << " iterations (residual " << e.last_residual << ")";
+        return s.str();
+      }
+    catch (const std::exception &e)
+      {
+        return "the linear solver failed: " + one_line(e.what());
+      }
+    problem.distribute(delta);
+    if (!std::isfinite(delta.l2_norm()))
+      return "the linear solve returned an update that is not finite (NaN "
+             "or Inf)";
+    return "";
+  }
+
+
+
+  bool
+  NewtonSolver::accepts_branch_cycle(NonlinearProblem         &problem,
+                                     const Vector             &x,
+                                     const ResidualEvaluation &trial,
+                                     unsigned int &conflicting_points,
+                                     NewtonReport &report) const
+  {
+    // A state that meets the tolerances with its tangent's branches while
+    // its own differ at some points, for the second time in the step at as
+    // many points: Newton alternates between the branches of points on
+    // their switch, where no state agrees with either. It is accepted as
+    // solved (doc/model.md section 6.2).
+    if (trial.branch_changes == 0)
+      return false;
+    const Norms tol = tolerances(trial);
+    for (unsigned int b = 0; b < tol.size(); ++b)
+      if (trial.norms[b] > tol[b])
+        return false;
+    if (trial.branch_changes != conflicting_points)
+      {
+        conflicting_points = trial.branch_changes;
+        return false;
+      }
+    if (!converged(problem, x, trial, report))
+      return false;
+    monitor.out << "        the branches alternate at " << conflicting_points
+                << " points on their switch: the state that meets the "
+                   "tolerances with its tangent's branches is accepted"
+                << std::endl;
+    report.branch_conflicts = conflicting_points;
+    return true;
+  }
+
+
+
   NewtonReport
   NewtonSolver::solve(NonlinearProblem &problem, Vector &x)
   {
@@ -408,40 +483,11 @@ namespace DuctileContact
           recent_norms.pop_front();
 
         unsigned int n_linear = 0;
-        try
-          {
-            TimerOutput::Scope scope(monitor.timer, "linear solve");
-            delta    = 0;
-            n_linear = linear_solver.solve(problem.system_matrix(),
-                                           delta,
-                                           problem.system_rhs(),
-                                           fast && problem.keeps_tangent()
-                                             ? linear_accuracy(problem, tol)
-                                             : SolveAccuracy(),
-                                           chord);
-          }
-        catch (const SolverControl::NoConvergence &e)
-          {
-            std::ostringstream s;
-            s << "the iterative linear solver did not converge in "
-              << e.last_step << " iterations (residual " << e.last_residual
-              << ")";
-            report.failure = s.str();
-            return report;
-          }
-        catch (const std::exception &e)
-          {
-            report.failure = "the linear solver failed: " + one_line(e.what());
-            return report;
-          }
-        problem.distribute(delta);
+        report.failure =
+          solve_for_update(problem, fast ? &tol : nullptr, chord, n_linear);
         report.linear_iterations += n_linear;
-        if (!std::isfinite(delta.l2_norm()))
-          {
-            report.failure = "the linear solve returned an update that is not "
-                             "finite (NaN or Inf)";
-            return report;
-          }
+        if (!report.failure.empty())
+          return report;
         if (parameters.check_tangent && !pending && !chord)
           report.tangent_error =
             tangent_error(problem, x, evaluation.round_off);
@@ -486,30 +532,9 @@ namespace DuctileContact
         if (!still_pending && !branches_changed &&
             converged(problem, x, trial, report))
           return report;
-        // A state that meets the tolerances with its tangent's branches
-        // while its own differ at some points, for the second time in the
-        // step at as many points: Newton alternates between the branches of
-        // points on their switch, where no state agrees with either. It is
-        // accepted as solved (doc/model.md section 6.2).
-        bool within = true;
-        for (unsigned int b = 0; b < tol.size(); ++b)
-          within = within && trial.norms[b] <= tol[b];
-        if (!still_pending && branches_changed && within)
-          {
-            if (trial.branch_changes == conflicting_points &&
-                converged(problem, x, trial, report))
-              {
-                monitor.out << "        the branches alternate at "
-                            << conflicting_points
-                            << " points on their switch: the state that "
-                               "meets the tolerances with its tangent's "
-                               "branches is accepted"
-                            << std::endl;
-                report.branch_conflicts = conflicting_points;
-                return report;
-              }
-            conflicting_points = trial.branch_changes;
-          }
+        if (!still_pending &&
+            accepts_branch_cycle(problem, x, trial, conflicting_points, report))
+          return report;
         if (it + 1 == parameters.max_iterations)
           {
             report.failure = "no convergence in " + std::to_string(it + 1) +

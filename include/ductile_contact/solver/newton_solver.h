@@ -95,6 +95,30 @@ namespace DuctileContact
               const ResidualEvaluation &evaluation,
               NewtonReport             &report) const;
 
+    /// Solves the Newton system into #delta (with the problem's
+    /// constraints distributed), to the accuracy of Newton's fast phase if
+    /// @p fast_tolerances (the block tolerances) is given, else to the
+    /// linear solver's relative tolerance; @p chord: the matrix is the last
+    /// one. Returns why it failed ("" if it did not); @p n_linear is the
+    /// linear iterations.
+    std::string
+    solve_for_update(NonlinearProblem &problem,
+                     const Norms      *fast_tolerances,
+                     bool              chord,
+                     unsigned int     &n_linear);
+
+    /// Whether the state of @p trial (evaluated with its tangent's
+    /// branches) is accepted on a branch cycle: it meets the tolerances
+    /// while its own branches differ at as many points as at the last such
+    /// state of the step (@p conflicting_points, updated), and converged()
+    /// holds; then report.branch_conflicts is that number.
+    bool
+    accepts_branch_cycle(NonlinearProblem         &problem,
+                         const Vector             &x,
+                         const ResidualEvaluation &trial,
+                         unsigned int             &conflicting_points,
+                         NewtonReport             &report) const;
+
     /// Backtracking along #delta from @p x; on success @p x is the
     /// accepted trial and @p trial its evaluation. The merit of a trial is
     /// compared with the largest of #recent_norms' (Line search memory).
