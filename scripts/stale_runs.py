@@ -5,8 +5,10 @@ A run is a folder under benchmarks/ with a 'statistics' file. Its commit is
 the one recorded in its log.txt ('revision <hash>' in the program's header)
 or, for runs written before the program recorded it, the last commit that
 changed the statistics file. The physics is every file under
-source/materials, source/phase_field, source/contact and source/assembly
-(and their headers under include/ductile_contact/); a run is stale when a
+source/materials, source/phase_field, source/contact, source/assembly,
+source/coupled (the bound, the coupled system) and source/discretisation
+(the elements), and their headers under include/ductile_contact/, and
+Newton's acceptance rules (source/solver/newton_solver.cc); a run is stale when a
 commit that changed the physics, other than in comments, help texts or formatting, is newer than
 the run's commit.
 
@@ -27,8 +29,10 @@ import sys
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 PHYSICS = [
     "source/materials", "source/phase_field", "source/contact", "source/assembly",
+    "source/coupled", "source/discretisation", "source/solver/newton_solver.cc",
     "include/ductile_contact/materials", "include/ductile_contact/phase_field",
     "include/ductile_contact/contact", "include/ductile_contact/assembly",
+    "include/ductile_contact/coupled", "include/ductile_contact/discretisation",
 ]
 
 
