@@ -26,7 +26,7 @@ for basis in ["Lagrange", "Bernstein"]:
         continue
     t = table(run / "statistics")
     log = (run / "log.txt").read_text() if (run / "log.txt").exists() else ""
-    m = re.search(r"revision\s+(\S+)", log)
+    m = re.search(r"revision\s+([0-9a-f]+)", log)
     force = [abs(f) for f in t["F2_z"]]
     worst = max(abs(r) / w for r, w in list(zip(t["energy_residual"], t["external_work"]))[3:])
     lines.append(
