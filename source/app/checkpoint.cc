@@ -250,6 +250,9 @@ namespace DuctileContact
       // further refinement.
       if (entry.rfind("Mesh/Adaptive refinement/", 0) == 0)
         return false;
+      // The number of vectors a checkpoint holds depends on it.
+      if (entry == "Load stepping/Time integration")
+        return true;
       for (const char *prefix : {"Mesh/",
                                  "Finite elements/",
                                  "Bodies/",

@@ -18,6 +18,7 @@ namespace DuctileContact
     fracture_viscous_work += committed.fracture_viscous_work_increment;
     history_driving_work += committed.history_work_increment;
     plastic_energy_released += committed.plastic_energy_release_increment;
+    inertial_work += committed.inertial_work_increment;
   }
 
 
@@ -27,6 +28,7 @@ namespace DuctileContact
                              const AssemblyInfo &committed,
                              const bool          plastic,
                              const bool          cracking,
+                             const bool          dynamic,
                              const double        contact_dissipation) const
   {
     statistics.add("stored_energy", committed.stored_energy);
@@ -57,9 +59,21 @@ namespace DuctileContact
         statistics.add("fracture_viscous_work", fracture_viscous_work);
         statistics.add("history_driving_work", history_driving_work);
       }
+    if (dynamic)
+      {
+        statistics.add("kinetic_energy", committed.kinetic_energy);
+        statistics.add("numerical_dissipation",
+                       inertial_work -
+                         (committed.kinetic_energy - initial_kinetic_energy));
+        static const char *const names[] = {"momentum_x",
+                                            "momentum_y",
+                                            "momentum_z"};
+        for (unsigned int d = 0; d < dim; ++d)
+          statistics.add(names[d], committed.momentum[d]);
+      }
     statistics.add("energy_residual",
-                   external_work - committed.stored_energy - plastic_work +
-                     plastic_energy_released -
+                   external_work - inertial_work - committed.stored_energy -
+                     plastic_work + plastic_energy_released -
                      (committed.fracture_energy - initial_fracture_energy) -
                      fracture_viscous_work - contact_dissipation);
   }

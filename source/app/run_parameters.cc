@@ -286,6 +286,15 @@ namespace DuctileContact
       }
     check_adaptive_refinement();
     load_stepping.check();
+    check_input(
+      load_stepping.time_integration == TimeIntegration::quasi_static ||
+        std::any_of(bodies.begin(),
+                    bodies.end(),
+                    [](const BodyParameters &b) { return b.density > 0.; }),
+      "Load stepping/Time integration",
+      name_of(time_integration_names(), load_stepping.time_integration),
+      "a dynamic run needs a body with Density > 0 (every Body <id>/Density "
+      "is 0, so nothing has inertia)");
     newton.check();
     coupling.check();
     linear_solver.check();

@@ -7,6 +7,7 @@
 #include <ductile_contact/app/simulation.h>
 #include <ductile_contact/app/step_controller.h>
 #include <ductile_contact/app/stop_request.h>
+#include <ductile_contact/app/time_integrator.h>
 #include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/core/input_error.h>
 #include <ductile_contact/coupled/coupled_problem.h>
@@ -171,6 +172,11 @@ namespace DuctileContact
                                               *discretisation,
                                               bodies);
 
+    if (parameters.load_stepping.time_integration !=
+        TimeIntegration::quasi_static)
+      dynamics = std::make_unique<TimeIntegrator>(parameters.load_stepping,
+                                                  parameters.bodies,
+                                                  *discretisation);
     if (parameters.mesh.adaptive.enabled)
       adaptation = std::make_unique<MeshAdaptation>(parameters.mesh.adaptive,
                                                     triangulation,
@@ -223,6 +229,8 @@ namespace DuctileContact
                 comm);
     history.reinit(discretisation->dof_handler,
                    discretisation->quadrature[0].size());
+    if (dynamics)
+      dynamics->setup();
 
     boundary_dofs.clear();
     for (const BoundaryCondition &bc : parameters.boundary_conditions)
@@ -282,6 +290,7 @@ namespace DuctileContact
                        committed,
                        has_block(Block::hardening),
                        has_block(Block::phase_field),
+                       dynamics != nullptr,
                        contact_dissipation);
     add_field_columns();
     if (contact)
@@ -341,7 +350,12 @@ namespace DuctileContact
     internal_force                               = problem->internal_force();
     TrilinosWrappers::MPI::BlockVector increment = u;
     increment -= u_old;
-    committed = commit(step_data);
+    StepData commit_data = step_data;
+    if (dynamics)
+      commit_data.inertia = &dynamics->commit_terms(u, u_old, step_data.dt);
+    committed = commit(commit_data);
+    if (dynamics)
+      dynamics->accept();
     if (contact)
       contact->commit();
     energy.add_step(internal_force, increment, committed);
@@ -379,8 +393,13 @@ namespace DuctileContact
               << " Newton iterations" << std::endl;
       }
     old_solution = u;
-    committed =
-      commit({0., parameters.load_stepping.time_step, &old_solution, &history});
+    if (dynamics)
+      dynamics->start();
+    committed = commit({0.,
+                        parameters.load_stepping.time_step,
+                        &old_solution,
+                        &history,
+                        dynamics ? &dynamics->initial_terms() : nullptr});
     energy.start(committed);
     record_step(0, 0., 0., StepReport(), 0);
     if (parameters.output.interval > 0)
@@ -437,10 +456,13 @@ namespace DuctileContact
   {
     TimerOutput::Scope scope(timer, "checkpoint");
     energy.last_force().reinit(discretisation->owned_partitioning, comm);
-    Checkpoint::CellData cells;
-    Checkpoint::load_data(discretisation->dof_handler,
-                          {&u, &last_increment, &energy.last_force()},
-                          cells);
+    Checkpoint::CellData                              cells;
+    std::vector<TrilinosWrappers::MPI::BlockVector *> vectors{
+      &u, &last_increment, &energy.last_force()};
+    if (dynamics)
+      for (auto *v : dynamics->vectors())
+        vectors.push_back(v);
+    Checkpoint::load_data(discretisation->dof_handler, vectors, cells);
     for (const auto &cell : discretisation->dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() &&
           !history.unpack(cell, cells[cell->active_cell_index()]))
@@ -484,9 +506,17 @@ namespace DuctileContact
     parameters.prm.print_parameters(all,
                                     ParameterHandler::PRM |
                                       ParameterHandler::KeepDeclarationOrder);
+    std::vector<TrilinosWrappers::MPI::BlockVector>         dynamic_state;
+    std::vector<const TrilinosWrappers::MPI::BlockVector *> vectors{&u_ghosted,
+                                                                    &increment,
+                                                                    &force};
+    if (dynamics)
+      dynamic_state = dynamics->ghosted_vectors();
+    for (const auto &v : dynamic_state)
+      vectors.push_back(&v);
     checkpoints.write(step,
                       discretisation->dof_handler,
-                      {&u_ghosted, &increment, &force},
+                      vectors,
                       cells,
                       run_state(),
                       all.str());
@@ -561,7 +591,13 @@ namespace DuctileContact
           }
         else if (last_dt > 0.)
           alternatives = predict(dt_try / last_dt, u);
-        const StepData step_data{t + dt_try, dt_try, &old_solution, &history};
+        const StepData step_data{t + dt_try,
+                                 dt_try,
+                                 &old_solution,
+                                 &history,
+                                 dynamics
+                                   ? &dynamics->step_terms(old_solution, dt_try)
+                                   : nullptr};
         StepReport     report = solver->solve_step(step_data, u, alternatives);
 
         if (report.converged)

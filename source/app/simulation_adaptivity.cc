@@ -3,6 +3,7 @@
 #include <deal.II/hp/fe_values.h>
 
 #include <ductile_contact/app/simulation.h>
+#include <ductile_contact/app/time_integrator.h>
 #include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/coupled/coupled_problem.h>
 #include <ductile_contact/output/solution_writer.h>
@@ -54,12 +55,26 @@ namespace DuctileContact
       setup_dofs();
       trial.reinit(discretisation->owned_partitioning, comm);
     };
-    adaptation->refine({&old_solution, &trial_ghosted, &increment},
+    // A dynamic run carries v_n, a_n and a_m,n too: fields, interpolated.
+    std::vector<TrilinosWrappers::MPI::BlockVector> dynamic_state;
+    if (dynamics)
+      dynamic_state = dynamics->ghosted_vectors();
+    std::vector<const TrilinosWrappers::MPI::BlockVector *> carried{
+      &old_solution, &trial_ghosted, &increment};
+    for (const auto &v : dynamic_state)
+      carried.push_back(&v);
+    std::vector<TrilinosWrappers::MPI::BlockVector *> arrived{&u,
+                                                              &trial,
+                                                              &last_increment};
+    if (dynamics)
+      for (auto *v : dynamics->vectors())
+        arrived.push_back(v);
+    adaptation->refine(carried,
                        cells,
                        QuadratureHistory::packed_size,
                        discretisation->quadrature[0],
                        redistribute,
-                       {&u, &trial, &last_increment});
+                       arrived);
 
     for (const auto &cell : discretisation->dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() &&
@@ -91,14 +106,15 @@ namespace DuctileContact
     energy.last_force().reinit(discretisation->owned_partitioning, comm);
     AssemblyTargets targets;
     targets.internal_force = &energy.last_force();
-    assembler->assemble(old_solution,
-                        {t,
-                         last_dt > 0. ? last_dt
-                                      : parameters.load_stepping.time_step,
-                         &old_solution,
-                         &history},
-                        discretisation->hanging_node_constraints,
-                        targets);
+    assembler->assemble(
+      old_solution,
+      {t,
+       last_dt > 0. ? last_dt : parameters.load_stepping.time_step,
+       &old_solution,
+       &history,
+       dynamics ? &dynamics->accepted_terms(old_solution) : nullptr},
+      discretisation->hanging_node_constraints,
+      targets);
     if (contact)
       contact->add_committed_forces(old_solution, energy.last_force());
   }

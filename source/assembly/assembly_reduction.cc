@@ -21,6 +21,9 @@ namespace DuctileContact
     fracture_viscous_work_increment += o.fracture_viscous_work_increment;
     history_work_increment += o.history_work_increment;
     plastic_energy_release_increment += o.plastic_energy_release_increment;
+    kinetic_energy += o.kinetic_energy;
+    inertial_work_increment += o.inertial_work_increment;
+    momentum += o.momentum;
     min_plastic_dissipation =
       std::min(min_plastic_dissipation, o.min_plastic_dissipation);
     min_alpha   = std::min(min_alpha, o.min_alpha);
@@ -117,7 +120,11 @@ namespace DuctileContact
                              plastic_work_increment,
                              fracture_viscous_work_increment,
                              history_work_increment,
-                             plastic_energy_release_increment};
+                             plastic_energy_release_increment,
+                             kinetic_energy,
+                             inertial_work_increment};
+    for (unsigned int d = 0; d < dim; ++d)
+      sums.push_back(momentum[d]);
     for (unsigned int b = 0; b < Block::n_blocks; ++b)
       {
         sums.push_back(magnitude_squared[b]);
@@ -131,10 +138,15 @@ namespace DuctileContact
     info.fracture_viscous_work_increment  = sums[4];
     info.history_work_increment           = sums[5];
     info.plastic_energy_release_increment = sums[6];
+    info.kinetic_energy                   = sums[7];
+    info.inertial_work_increment          = sums[8];
+    for (unsigned int d = 0; d < dim; ++d)
+      info.momentum[d] = sums[9 + d];
+    const unsigned int first_block = 9 + dim;
     for (unsigned int b = 0; b < Block::n_blocks; ++b)
       {
-        info.residual_magnitude[b] = std::sqrt(sums[7 + 2 * b]);
-        info.residual_scale[b]     = std::sqrt(sums[8 + 2 * b]);
+        info.residual_magnitude[b] = std::sqrt(sums[first_block + 2 * b]);
+        info.residual_scale[b]     = std::sqrt(sums[first_block + 1 + 2 * b]);
       }
     // The scale of the u rows is the size of their terms.
     info.force_magnitude = info.residual_magnitude[Block::displacement];

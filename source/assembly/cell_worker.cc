@@ -477,6 +477,8 @@ namespace DuctileContact
         if (!pass.updated_history)
           return;
       }
+    if (step.inertia && body.density > 0.)
+      inertia_terms(cell, body, dofs, scratch, copy, pass);
     if (tangent)
       rows.add_blocks(dofs);
     finish_rows(cell, body, dofs, scratch, copy, pass);

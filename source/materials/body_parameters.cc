@@ -54,6 +54,21 @@ namespace DuctileContact
       "[Pa].",
       Patterns::Double(0.));
     prm.add_parameter(
+      "Density",
+      density,
+      "Mass density rho in the reference configuration [kg/m^3]: the "
+      "body's inertia with Load stepping/Time integration = Bossak "
+      "(ignored in quasi-static runs). 0: no inertia (the body follows "
+      "quasi-statically).",
+      Patterns::Double(0.));
+    prm.add_parameter(
+      "Initial velocity",
+      initial_velocity,
+      "Velocity at t = 0 [m/s], three expressions of x, y, z (reference "
+      "coordinates) separated by ';'; read with Time integration = Bossak. "
+      "The bodies start stress-free, so the initial acceleration is 0.",
+      Patterns::Anything());
+    prm.add_parameter(
       "Plasticity",
       plasticity,
       "Whether this body yields: it then carries the hardening field alpha "
@@ -237,6 +252,19 @@ namespace DuctileContact
                 prefix + "Bulk modulus",
                 value(bulk_modulus),
                 "it must be positive");
+    const auto velocity = Utilities::split_string_list(initial_velocity, ';');
+    check_input(velocity.size() == dim,
+                prefix + "Initial velocity",
+                initial_velocity,
+                "it needs three expressions separated by ';'");
+    for (const std::string &part : velocity)
+      {
+        const std::string error = expression_error(part, "x,y,z");
+        check_input(error.empty(),
+                    prefix + "Initial velocity",
+                    initial_velocity,
+                    "'" + part + "' is not an expression of x, y, z: " + error);
+      }
     if (plasticity)
       {
         const std::string p = prefix + "Plasticity/";

@@ -89,6 +89,29 @@ namespace DuctileContact
       "merit of Newton's line search; two residual assemblies more per "
       "step), so that a step where the internal fields' last increment "
       "misleads starts without it.");
+    add_option(
+      prm,
+      "Time integration",
+      time_integration,
+      time_integration_names(),
+      "'quasi-static': no inertia; t is a load parameter. 'Bossak': "
+      "implicit dynamics, t in seconds, the inertia of the bodies with a "
+      "Density > 0 in the momentum balance, integrated by the Bossak-alpha "
+      "scheme (Wood, Bossak & Zienkiewicz 1980; Newmark's update with the "
+      "inertia at (1 - a_B) a_n+1 + a_B a_n), second-order accurate; alpha "
+      "and s keep their first-order (viscous) evolution "
+      "(doc/model.md section 6.5).");
+    prm.add_parameter(
+      "High-frequency spectral radius",
+      spectral_radius,
+      "rho_inf of the Bossak scheme [-]: the amplification of the modes "
+      "that the step does not resolve (omega dt -> infinity). 1: no "
+      "numerical dissipation, the trapezoidal rule (Newmark beta = 1/4, "
+      "gamma = 1/2); smaller values damp those modes (0: in one step), at "
+      "the cost of a dissipation of second order in dt for the resolved "
+      "ones (statistics column numerical_dissipation). a_B = (rho_inf - "
+      "1)/(rho_inf + 1), gamma = 1/2 - a_B, beta = (1 - a_B)^2/4.",
+      Patterns::Double(0., 1.));
     prm.leave_subsection();
   }
 

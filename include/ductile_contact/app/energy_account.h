@@ -27,6 +27,13 @@ namespace DuctileContact
    * Psi^p - R_p the plastic dissipation. All in [J]. The crack energy
    * enters as its change since the start (an initial crack's own energy is
    * not work done on the solid).
+   *
+   * In a dynamic run f holds the inertial force too (its Dirichlet rows are
+   * the reactions of the moving bodies), and the residual also subtracts
+   * the inertial work W_in = sum of int rho (u_n+1 - u_n) . (a_m,n +
+   * a_m,n+1)/2 dV, which is the change of kinetic energy K - K_0 plus the
+   * scheme's numerical dissipation D_num = W_in - (K - K_0) (0 for the
+   * trapezoidal rule; doc/model.md section 6.5).
    */
   class EnergyAccount
   {
@@ -36,6 +43,7 @@ namespace DuctileContact
     start(const AssemblyInfo &initial)
     {
       initial_fracture_energy = initial.fracture_energy;
+      initial_kinetic_energy  = initial.kinetic_energy;
     }
 
     /// Adds an accepted step: internal force @p force at its end, the
@@ -50,12 +58,15 @@ namespace DuctileContact
     /// history_driving_work] and energy_residual at the state @p committed;
     /// with plasticity also plastic_dissipation, plastic_energy_released,
     /// the step's smallest local plastic dissipation min_plastic_dissipation
-    /// [J/m^3] and the smallest alpha at a quadrature point, min_alpha.
+    /// [J/m^3] and the smallest alpha at a quadrature point, min_alpha;
+    /// if @p dynamic kinetic_energy, numerical_dissipation and
+    /// momentum_x, _y, _z.
     void
     add_columns(Statistics         &statistics,
                 const AssemblyInfo &committed,
                 const bool          plastic,
                 const bool          cracking,
+                const bool          dynamic,
                 const double        contact_dissipation) const;
 
     /// The force of the last accepted step (trapezoidal external work).
@@ -71,7 +82,8 @@ namespace DuctileContact
     serialize(Archive &ar, const unsigned int)
     {
       ar &external_work &plastic_work &fracture_viscous_work
-        &history_driving_work &plastic_energy_released &initial_fracture_energy;
+        &history_driving_work &plastic_energy_released &initial_fracture_energy
+          &inertial_work &initial_kinetic_energy;
     }
 
   private:
@@ -82,5 +94,7 @@ namespace DuctileContact
     double                                     history_driving_work    = 0.;
     double                                     plastic_energy_released = 0.;
     double                                     initial_fracture_energy = 0.;
+    double                                     inertial_work           = 0.;
+    double                                     initial_kinetic_energy  = 0.;
   };
 } // namespace DuctileContact

@@ -30,6 +30,7 @@ namespace DuctileContact
   class NewtonSolver;
   struct StepReport;
   class SolutionWriter;
+  class TimeIntegrator;
 
   /**
    * One quasi-static run (doc/model.md section 6): the mesh and the objects of
@@ -193,6 +194,8 @@ namespace DuctileContact
     std::unique_ptr<NewtonSolver>                                newton;
     std::unique_ptr<CoupledSolver>                               solver;
     std::unique_ptr<SolutionWriter>                              writer;
+    /// The inertia of a dynamic run (null when quasi-static).
+    std::unique_ptr<TimeIntegrator> dynamics;
     /// Mesh/Adaptive refinement (null when off).
     std::unique_ptr<MeshAdaptation> adaptation;
     /// Whether Maximum cells has held back refinement (noted once).

@@ -45,6 +45,14 @@ namespace DuctileContact
     /// with Psi^p_loc of plastic_energy_density() (int_0^alpha yhat da
     /// unless the plastic energy is degraded).
     double hardening_energy = 0.;
+    /// Commit of a dynamic step: the kinetic energy int rho |v|^2/2 dV
+    /// [J] and the momentum int rho v dV [kg m/s] of the accepted state,
+    /// and the step's inertial work int rho (u_n+1 - u_n) . (a_m,n +
+    /// a_m,n+1)/2 dV [J] (its change of kinetic energy plus the scheme's
+    /// numerical dissipation).
+    double                 kinetic_energy = 0.;
+    dealii::Tensor<1, dim> momentum;
+    double                 inertial_work_increment = 0.;
     /// g_c int gamma dV with the C0IP-consistent bi-Laplacian [J]:
     /// a(s, s)/2 of phase_field/c0ip.h.
     double fracture_energy = 0.;
@@ -127,13 +135,16 @@ namespace DuctileContact
    */
   struct AssemblyReduction
   {
-    double stored_energy                    = 0.;
-    double hardening_energy                 = 0.;
-    double fracture_energy                  = 0.;
-    double plastic_work_increment           = 0.;
-    double fracture_viscous_work_increment  = 0.;
-    double history_work_increment           = 0.;
-    double plastic_energy_release_increment = 0.;
+    double                 stored_energy                    = 0.;
+    double                 hardening_energy                 = 0.;
+    double                 fracture_energy                  = 0.;
+    double                 plastic_work_increment           = 0.;
+    double                 fracture_viscous_work_increment  = 0.;
+    double                 history_work_increment           = 0.;
+    double                 plastic_energy_release_increment = 0.;
+    double                 kinetic_energy                   = 0.;
+    double                 inertial_work_increment          = 0.;
+    dealii::Tensor<1, dim> momentum;
     double min_plastic_dissipation = std::numeric_limits<double>::max();
     double min_alpha               = std::numeric_limits<double>::max();
     double max_s_point             = std::numeric_limits<double>::lowest();
@@ -290,6 +301,27 @@ namespace DuctileContact
     std::uint64_t pattern = 0;
   };
 
+  /**
+   * The inertia of a dynamic step (doc/model.md section 6.5): the
+   * acceleration at which the momentum balance takes the inertia is
+   * linear in the step's displacements, a_m = c (u - u*), so that a body
+   * of density rho adds int rho a_m . du dV to R_u (and to f_int, whose
+   * Dirichlet rows are then the reactions of the moving bodies) and c M
+   * to the tangent. The commit pass also reads the accepted state's
+   * velocity and the mean inertial acceleration of the step.
+   */
+  struct InertiaTerms
+  {
+    /// c [1/s^2].
+    double mass_factor = 0.;
+    /// u* with ghost entries (displacement block).
+    const dealii::TrilinosWrappers::MPI::BlockVector *target = nullptr;
+    /// Commit only: v_n+1, and (a_m,n + a_m,n+1)/2, with ghost entries.
+    const dealii::TrilinosWrappers::MPI::BlockVector *velocity = nullptr;
+    const dealii::TrilinosWrappers::MPI::BlockVector *mean_acceleration =
+      nullptr;
+  };
+
   /// The load step being solved: time, step and the accepted state before.
   struct StepData
   {
@@ -298,5 +330,7 @@ namespace DuctileContact
     /// Solution of the last accepted step, with ghost entries.
     const dealii::TrilinosWrappers::MPI::BlockVector *old_solution = nullptr;
     const QuadratureHistory                          *history      = nullptr;
+    /// Dynamic runs only (null: quasi-static).
+    const InertiaTerms *inertia = nullptr;
   };
 } // namespace DuctileContact

@@ -41,6 +41,10 @@ namespace DuctileContact
                        discretisation.quadrature,
                        dealii::update_values | dealii::update_gradients |
                          dealii::update_hessians | dealii::update_JxW_values)
+        , mass_values(discretisation.mapping,
+                      discretisation.fe_collection,
+                      discretisation.quadrature,
+                      dealii::update_values | dealii::update_JxW_values)
         , face_values(discretisation.mapping,
                       discretisation.fe_collection,
                       discretisation.face_quadrature,
@@ -70,7 +74,9 @@ namespace DuctileContact
     dealii::hp::FEValues<dim> elastic_values, coupled_values;
     /// With hessians, for the crack functional's cell matrices (built once
     /// per mesh, SystemAssembler::crack_matrix()).
-    dealii::hp::FEValues<dim>     crack_values;
+    dealii::hp::FEValues<dim> crack_values;
+    /// Values only, for the mass matrices of dynamic runs.
+    dealii::hp::FEValues<dim>     mass_values;
     dealii::hp::FEFaceValues<dim> face_values;
     std::vector<std::unique_ptr<dealii::FEInterfaceValues<dim>>>
       interface_values;
@@ -87,6 +93,10 @@ namespace DuctileContact
     /// their values.
     std::vector<unsigned int> face_s_dofs;
     dealii::Vector<double>    face_s_values;
+    /// Inertia of a dynamic step: the cell's scalar mass matrix and the
+    /// local values of the vectors it multiplies.
+    dealii::FullMatrix<double> mass;
+    dealii::Vector<double>     inertia_u, inertia_target, inertia_other;
   };
 
   /// What one cell adds: its rows, the rows of the C0IP faces it owns, its

@@ -175,6 +175,18 @@ namespace DuctileContact
 
     /// After the points of @p cell: the crack functional's cell terms, the
     /// magnitudes, -R, the tractions and the C0IP faces of the cell.
+    /// The inertia of a dynamic step on @p cell (body density > 0): its
+    /// rows int rho a_m . du dV with a_m = c (u - u*) and tangent c M in
+    /// an assembly with targets, its kinetic energy, momentum and inertial
+    /// work in a commit (source/assembly/inertia_rows.cc).
+    void
+    inertia_terms(const dealii::DoFHandler<dim>::active_cell_iterator &cell,
+                  const BodyParameters                                &body,
+                  const LocalDofs                                     &dofs,
+                  CellScratch                                         &scratch,
+                  CellCopy                                            &copy,
+                  const Pass &pass) const;
+
     void
     finish_rows(const dealii::DoFHandler<dim>::active_cell_iterator &cell,
                 const BodyParameters                                &body,

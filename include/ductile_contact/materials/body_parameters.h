@@ -56,6 +56,13 @@ namespace DuctileContact
     double                     shear_modulus = MaterialDefaults::shear_modulus;
     double                     bulk_modulus  = MaterialDefaults::bulk_modulus;
 
+    /// Mass density in the reference configuration [kg/m^3] (inertia in
+    /// dynamic runs only; 0: none).
+    double density = 0.;
+    /// v(X) at t = 0 [m/s]: three muparser expressions of x, y, z
+    /// separated by ';'.
+    std::string initial_velocity = "0; 0; 0";
+
     /// Whether the body carries the hardening field alpha (plasticity).
     bool plasticity = false;
     /// Whether the body carries the crack phase field s (fracture).

@@ -8,6 +8,22 @@
 
 namespace DuctileContact
 {
+  /// Load stepping/Time integration.
+  enum class TimeIntegration
+  {
+    quasi_static,
+    bossak
+  };
+
+  inline const NameTable<TimeIntegration> &
+  time_integration_names()
+  {
+    static const NameTable<TimeIntegration> t{
+      {TimeIntegration::quasi_static, "quasi-static"},
+      {TimeIntegration::bossak, "Bossak"}};
+    return t;
+  }
+
   /**
    * Subsection `Load stepping`: quasi-static pseudo time t in [0, End time];
    * all boundary data are functions of t. A step whose Newton iteration
@@ -54,6 +70,10 @@ namespace DuctileContact
     /// constant | linear | linear displacements | best linear: first guess
     /// of a step (see declare()).
     Predictor predictor = Predictor::constant;
+    /// quasi-static | Bossak (implicit dynamics; see declare()).
+    TimeIntegration time_integration = TimeIntegration::quasi_static;
+    /// rho_inf of the Bossak scheme, in [0, 1] (1: the trapezoidal rule).
+    double spectral_radius = 1.;
 
     void
     declare(dealii::ParameterHandler &prm);

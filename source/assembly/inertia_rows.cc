@@ -1,0 +1,131 @@
+// The inertia of a dynamic step (doc/model.md section 6.5): rows, tangent
+// and the commit's kinetic quantities of one cell, from its scalar mass
+// matrix m_ab = int rho N_a N_b dV over the displacement nodes.
+#include <deal.II/fe/fe_values.h>
+
+#include <ductile_contact/assembly/cell_rows.h>
+#include <ductile_contact/assembly/cell_scratch.h>
+#include <ductile_contact/assembly/system_assembler.h>
+
+#include <cmath>
+
+namespace DuctileContact
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// m_ab = int rho N_a N_b dV, a and b the nodes in the order of
+    /// LocalDofs::u_by_component.
+    void
+    cell_mass_matrix(const FEValues<dim> &fe_values,
+                     const LocalDofs     &dofs,
+                     const double         density,
+                     FullMatrix<double>  &mass)
+    {
+      const std::vector<unsigned int> &nodes = dofs.u_by_component[0];
+      const unsigned int               n     = nodes.size();
+      mass.reinit(n, n);
+      for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+        {
+          const double w = density * fe_values.JxW(q);
+          for (unsigned int a = 0; a < n; ++a)
+            {
+              const double Na = w * fe_values.shape_value(nodes[a], q);
+              for (unsigned int b = 0; b < n; ++b)
+                mass(a, b) += Na * fe_values.shape_value(nodes[b], q);
+            }
+        }
+    }
+
+    /// sum_b m_ab x_b^c for node a and component c, x the local values.
+    double
+    mass_times(const FullMatrix<double> &mass,
+               const Vector<double>     &x,
+               const LocalDofs          &dofs,
+               const unsigned int        a,
+               const unsigned int        c)
+    {
+      const std::vector<unsigned int> &nodes = dofs.u_by_component[c];
+      double                           sum   = 0.;
+      for (unsigned int b = 0; b < nodes.size(); ++b)
+        sum += mass(a, b) * x(nodes[b]);
+      return sum;
+    }
+  } // namespace
+
+
+
+  void
+  SystemAssembler::inertia_terms(
+    const DoFHandler<dim>::active_cell_iterator &cell,
+    const BodyParameters                        &body,
+    const LocalDofs                             &dofs,
+    CellScratch                                 &scratch,
+    CellCopy                                    &copy,
+    const Pass                                  &pass) const
+  {
+    const InertiaTerms &inertia = *pass.step->inertia;
+    scratch.mass_values.reinit(cell);
+    cell_mass_matrix(scratch.mass_values.get_present_fe_values(),
+                     dofs,
+                     body.density,
+                     scratch.mass);
+    const FullMatrix<double> &mass   = scratch.mass;
+    const unsigned int        n      = mass.m();
+    const unsigned int        n_dofs = cell->get_fe().n_dofs_per_cell();
+    Vector<double> &u = scratch.inertia_u, &x = scratch.inertia_target,
+                   &y = scratch.inertia_other;
+    u.reinit(n_dofs);
+    x.reinit(n_dofs);
+    cell->get_dof_values(*pass.u, u);
+
+    if (pass.targets)
+      {
+        // f_int += c M (u - u*): the inertial force of a_m = c (u - u*).
+        cell->get_dof_values(*inertia.target, x);
+        x.sadd(-1., 1., u);
+        LocalRows   &rows = copy.cell;
+        const double c    = inertia.mass_factor;
+        for (unsigned int comp = 0; comp < dim; ++comp)
+          {
+            const std::vector<unsigned int> &nodes = dofs.u_by_component[comp];
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                double magnitude = 0.;
+                for (unsigned int b = 0; b < n; ++b)
+                  magnitude += std::abs(mass(a, b) * x(nodes[b]));
+                rows.f_int(nodes[a]) += c * mass_times(mass, x, dofs, a, comp);
+                rows.magnitude(nodes[a]) += c * magnitude;
+                if (pass.targets->tangent)
+                  for (unsigned int b = 0; b < n; ++b)
+                    rows.matrix(nodes[a], nodes[b]) += c * mass(a, b);
+              }
+          }
+      }
+
+    if (pass.updated_history && inertia.velocity)
+      {
+        // Kinetic energy and momentum of v_n+1; the inertial work
+        // (u_n+1 - u_n) . M (a_m,n + a_m,n+1)/2 of the step.
+        AssemblyReduction &sums = copy.sums;
+        cell->get_dof_values(*inertia.velocity, x);
+        y.reinit(n_dofs);
+        cell->get_dof_values(*pass.step->old_solution, y);
+        y.sadd(-1., 1., u); // u_n+1 - u_n
+        cell->get_dof_values(*inertia.mean_acceleration, u);
+        for (unsigned int comp = 0; comp < dim; ++comp)
+          {
+            const std::vector<unsigned int> &nodes = dofs.u_by_component[comp];
+            for (unsigned int a = 0; a < n; ++a)
+              {
+                const double mv = mass_times(mass, x, dofs, a, comp);
+                sums.kinetic_energy += 0.5 * x(nodes[a]) * mv;
+                sums.momentum[comp] += mv;
+                sums.inertial_work_increment +=
+                  y(nodes[a]) * mass_times(mass, u, dofs, a, comp);
+              }
+          }
+      }
+  }
+} // namespace DuctileContact
