@@ -2,7 +2,8 @@
 # Checks that the user-facing text says what is, not how it came to be: no
 # development sessions ("session 45", "sessions 35-36", "this session"), no
 # issue numbers ("issue #4", "Issue 28", "(#24)"), no "the issue's target",
-# no "wave", no "until ... lands". Lists FILE:LINE: TEXT for each mention and
+# no development "wave" ("wave 2", "this wave"; a P wave is physics), no
+# "until ... lands". Lists FILE:LINE: TEXT for each mention and
 # exits 1 if there is any, 0 otherwise.
 # Usage: scripts/check_user_text.sh [FILE...]
 #   default: README.md, doc/, prm/ (the .prm files and the mesh scripts),
@@ -41,7 +42,8 @@ perl -ne '
     | \bissues?\s*\#?\s*\d+                  # issue #4, Issue 28, issues #4 and #3
     | (?<![\w&/\#])\#\d{1,3}\b               # (#24), #28
     | \b(?:the|this|that)(?:\s+[a-z]+)?\s+issue(?:s|\x27s)?\b  # the issue, this issue
-    | \bwaves?\b                             # wave
+    | \bwave\s+\d+                           # wave 2
+    | \b(?:this|next|last|previous|current)\s+wave\b  # this wave
     | \buntil\b.*\blands\b                   # until frictional contact lands
   }xi;
   if (/$history/) {
