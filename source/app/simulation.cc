@@ -174,9 +174,20 @@ namespace DuctileContact
 
     if (parameters.load_stepping.time_integration !=
         TimeIntegration::quasi_static)
-      dynamics = std::make_unique<TimeIntegrator>(parameters.load_stepping,
-                                                  parameters.bodies,
-                                                  *discretisation);
+      {
+        std::vector<types::boundary_id> massless;
+        if (parameters.load_stepping.contact_surface_mass ==
+            ContactSurfaceMass::redistributed)
+          for (const ContactPairParameters &c : parameters.contact_pairs)
+            {
+              massless.push_back(c.slave_boundary_id);
+              massless.push_back(c.master_boundary_id);
+            }
+        dynamics = std::make_unique<TimeIntegrator>(parameters.load_stepping,
+                                                    parameters.bodies,
+                                                    *discretisation,
+                                                    massless);
+      }
     if (parameters.mesh.adaptive.enabled)
       adaptation = std::make_unique<MeshAdaptation>(parameters.mesh.adaptive,
                                                     triangulation,

@@ -2,6 +2,7 @@
 
 #include <ductile_contact/app/time_integrator.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 
@@ -10,16 +11,29 @@ namespace DuctileContact
   using namespace dealii;
   using BlockVector = TrilinosWrappers::MPI::BlockVector;
 
-  TimeIntegrator::TimeIntegrator(const LoadSteppingParameters     &parameters,
-                                 const std::deque<BodyParameters> &bodies,
-                                 const Discretisation &discretisation)
+  TimeIntegrator::TimeIntegrator(
+    const LoadSteppingParameters          &parameters,
+    const std::deque<BodyParameters>      &bodies,
+    const Discretisation                  &discretisation,
+    const std::vector<types::boundary_id> &massless_boundaries)
       : alpha_b((parameters.spectral_radius - 1.) /
                 (parameters.spectral_radius + 1.))
       , beta(0.25 * (1. - alpha_b) * (1. - alpha_b))
       , gamma(0.5 - alpha_b)
       , bodies(bodies)
       , discretisation(discretisation)
+      , massless_boundaries(massless_boundaries)
   {
+  }
+
+
+
+  InertiaTerms &
+  TimeIntegrator::reset_terms()
+  {
+    terms          = InertiaTerms();
+    terms.massless = &massless;
+    return terms;
   }
 
 
@@ -39,6 +53,32 @@ namespace DuctileContact
       v->reinit(discretisation.owned_partitioning,
                 discretisation.relevant_partitioning,
                 comm);
+
+    // The u DoFs of the massless faces of the owned and ghost cells: every
+    // owned cell that touches such a node, by a face, an edge or a vertex,
+    // finds it here.
+    massless.clear();
+    std::vector<types::global_dof_index> face_dofs;
+    for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() || cell->is_ghost())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              std::find(massless_boundaries.begin(),
+                        massless_boundaries.end(),
+                        cell->face(f)->boundary_id()) !=
+                massless_boundaries.end())
+            {
+              const FiniteElement<dim> &fe = cell->get_fe();
+              face_dofs.resize(fe.n_dofs_per_face(f));
+              cell->face(f)->get_dof_indices(face_dofs,
+                                             cell->active_fe_index());
+              for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                if (fe.face_system_to_component_index(i, f).first < dim)
+                  massless.push_back(face_dofs[i]);
+            }
+    std::sort(massless.begin(), massless.end());
+    massless.erase(std::unique(massless.begin(), massless.end()),
+                   massless.end());
   }
 
 
@@ -89,9 +129,9 @@ namespace DuctileContact
   const InertiaTerms &
   TimeIntegrator::initial_terms()
   {
-    velocity_ghosted        = velocity;
-    mean_acceleration       = 0.;
-    terms                   = InertiaTerms();
+    velocity_ghosted  = velocity;
+    mean_acceleration = 0.;
+    reset_terms();
     terms.velocity          = &velocity_ghosted;
     terms.mean_acceleration = &mean_acceleration;
     return terms;
@@ -116,8 +156,8 @@ namespace DuctileContact
     for (unsigned int b = 0; b < Block::n_blocks; ++b)
       if (b != Block::displacement)
         star.block(b) = 0.;
-    target            = star;
-    terms             = InertiaTerms();
+    target = star;
+    reset_terms();
     terms.mass_factor = (1. - alpha_b) / (beta * dt * dt);
     terms.target      = &target;
     return terms;
@@ -183,8 +223,8 @@ namespace DuctileContact
     for (unsigned int b = 0; b < Block::n_blocks; ++b)
       if (b != Block::displacement)
         star.block(b) = 0.;
-    target            = star;
-    terms             = InertiaTerms();
+    target = star;
+    reset_terms();
     terms.mass_factor = 1.;
     terms.target      = &target;
     return terms;

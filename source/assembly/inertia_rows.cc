@@ -1,12 +1,15 @@
 // The inertia of a dynamic step (doc/model.md section 6.5): rows, tangent
 // and the commit's kinetic quantities of one cell, from its scalar mass
 // matrix m_ab = int rho N_a N_b dV over the displacement nodes.
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
 #include <ductile_contact/assembly/cell_rows.h>
 #include <ductile_contact/assembly/cell_scratch.h>
 #include <ductile_contact/assembly/system_assembler.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace DuctileContact
@@ -56,6 +59,43 @@ namespace DuctileContact
 
 
 
+  Quadrature<dim>
+  redistributed_mass_rule(const std::vector<Point<dim>> &massless_nodes,
+                          const unsigned int             n_gauss)
+  {
+    const auto on_face = [](const double xi) {
+      return std::abs(xi) < 1e-12 || std::abs(xi - 1.) < 1e-12;
+    };
+    // Greedy: the direction whose faces hold most of the nodes not yet
+    // covered, until all are.
+    std::array<bool, dim>   midpoint{};
+    std::vector<Point<dim>> left = massless_nodes;
+    while (!left.empty())
+      {
+        std::array<unsigned int, dim> count{};
+        for (const Point<dim> &p : left)
+          for (unsigned int d = 0; d < dim; ++d)
+            count[d] += (!midpoint[d] && on_face(p[d])) ? 1 : 0;
+        const unsigned int d =
+          std::max_element(count.begin(), count.end()) - count.begin();
+        AssertThrow(count[d] > 0, ExcMessage("a massless node inside a cell"));
+        midpoint[d] = true;
+        left.erase(std::remove_if(left.begin(),
+                                  left.end(),
+                                  [&](const Point<dim> &p) {
+                                    return on_face(p[d]);
+                                  }),
+                   left.end());
+      }
+    const auto rule = [&](const unsigned int d) {
+      return midpoint[d] ? Quadrature<1>(QMidpoint<1>())
+                         : Quadrature<1>(QGauss<1>(n_gauss));
+    };
+    return Quadrature<dim>(Quadrature<2>(rule(0), rule(1)), rule(2));
+  }
+
+
+
   void
   SystemAssembler::inertia_terms(
     const DoFHandler<dim>::active_cell_iterator &cell,
@@ -65,12 +105,42 @@ namespace DuctileContact
     CellCopy                                    &copy,
     const Pass                                  &pass) const
   {
-    const InertiaTerms &inertia = *pass.step->inertia;
-    scratch.mass_values.reinit(cell);
-    cell_mass_matrix(scratch.mass_values.get_present_fe_values(),
-                     dofs,
-                     body.density,
-                     scratch.mass);
+    const InertiaTerms              &inertia = *pass.step->inertia;
+    LocalRows                       &rows    = copy.cell;
+    const std::vector<unsigned int> &nodes0  = dofs.u_by_component[0];
+
+    // The cell's nodes on a contact surface (their x DoF is in the set).
+    std::vector<Point<dim>> massless_nodes;
+    if (inertia.massless && !inertia.massless->empty())
+      {
+        const FiniteElement<dim> &scalar = cell->get_fe().base_element(0);
+        for (unsigned int a = 0; a < nodes0.size(); ++a)
+          if (std::binary_search(inertia.massless->begin(),
+                                 inertia.massless->end(),
+                                 rows.indices[nodes0[a]]))
+            massless_nodes.push_back(scalar.unit_support_point(a));
+      }
+    if (massless_nodes.empty())
+      {
+        scratch.mass_values.reinit(cell);
+        cell_mass_matrix(scratch.mass_values.get_present_fe_values(),
+                         dofs,
+                         body.density,
+                         scratch.mass);
+      }
+    else
+      {
+        AssertThrow(discretisation.degree == 2,
+                    ExcMessage("the redistributed contact mass needs Q2"));
+        FEValues<dim> fe_values(
+          discretisation.mapping[0],
+          cell->get_fe(),
+          redistributed_mass_rule(massless_nodes, discretisation.degree + 1),
+          update_values | update_JxW_values);
+        fe_values.reinit(cell);
+        cell_mass_matrix(fe_values, dofs, body.density, scratch.mass);
+      }
+
     const FullMatrix<double> &mass   = scratch.mass;
     const unsigned int        n      = mass.m();
     const unsigned int        n_dofs = cell->get_fe().n_dofs_per_cell();
@@ -85,8 +155,7 @@ namespace DuctileContact
         // f_int += c M (u - u*): the inertial force of a_m = c (u - u*).
         cell->get_dof_values(*inertia.target, x);
         x.sadd(-1., 1., u);
-        LocalRows   &rows = copy.cell;
-        const double c    = inertia.mass_factor;
+        const double c = inertia.mass_factor;
         for (unsigned int comp = 0; comp < dim; ++comp)
           {
             const std::vector<unsigned int> &nodes = dofs.u_by_component[comp];

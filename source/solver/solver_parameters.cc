@@ -112,6 +112,20 @@ namespace DuctileContact
       "ones (statistics column numerical_dissipation). a_B = (rho_inf - "
       "1)/(rho_inf + 1), gamma = 1/2 - a_B, beta = (1 - a_B)^2/4.",
       Patterns::Double(0., 1.));
+    add_option(
+      prm,
+      "Contact surface mass",
+      contact_surface_mass,
+      contact_surface_mass_names(),
+      "Dynamic runs with contact pairs: 'redistributed' takes the mass off "
+      "the nodes of the contact surfaces (slave and master) and gives it to "
+      "the next layer of nodes of the same cells, keeping each cell's mass "
+      "and centre of mass (the singular mass of Khenous, Laborde & Renard "
+      "2008): the contact constraints then act on nodes without inertia, "
+      "and implicit contact neither chatters nor creates energy. "
+      "'consistent': the consistent mass everywhere, with which an elastic "
+      "impact gains energy at every contact and release "
+      "(doc/model.md section 6.5).");
     prm.leave_subsection();
   }
 

@@ -30,17 +30,26 @@ namespace DuctileContact
    * linear in u_n+1, a_m = c (u_n+1 - u*), which is what the assembly
    * needs (InertiaTerms).
    *
+   * The nodes of @p massless_boundaries carry no mass: the cells there take
+   * their mass matrix from redistributed_mass_rule() (InertiaTerms::
+   * massless).
+   *
    * Holds the state v_n, a_n, a_m,n of the displacement block (the other
    * blocks stay zero), for checkpoints and mesh transfer by vectors().
    */
   class TimeIntegrator
   {
   public:
-    TimeIntegrator(const LoadSteppingParameters     &parameters,
-                   const std::deque<BodyParameters> &bodies,
-                   const Discretisation             &discretisation);
+    /// @p massless_boundaries: the boundary ids whose nodes carry no mass
+    /// (the contact surfaces with Contact surface mass = redistributed).
+    TimeIntegrator(
+      const LoadSteppingParameters                  &parameters,
+      const std::deque<BodyParameters>              &bodies,
+      const Discretisation                          &discretisation,
+      const std::vector<dealii::types::boundary_id> &massless_boundaries);
 
-    /// Sizes the vectors (zero); after every DoF distribution.
+    /// Sizes the vectors (zero) and finds the massless DoFs; after every
+    /// DoF distribution.
     void
     setup();
 
@@ -90,8 +99,15 @@ namespace DuctileContact
     double alpha_b, beta, gamma;
 
   private:
-    const std::deque<BodyParameters> &bodies;
-    const Discretisation             &discretisation;
+    /// A fresh #terms with the massless DoFs.
+    InertiaTerms &
+    reset_terms();
+
+    const std::deque<BodyParameters>             &bodies;
+    const Discretisation                         &discretisation;
+    const std::vector<dealii::types::boundary_id> massless_boundaries;
+    /// The u DoFs on those boundaries (sorted, locally relevant).
+    std::vector<dealii::types::global_dof_index> massless;
 
     dealii::TrilinosWrappers::MPI::BlockVector velocity, acceleration,
       inertial_acceleration;

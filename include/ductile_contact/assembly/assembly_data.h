@@ -316,6 +316,11 @@ namespace DuctileContact
     double mass_factor = 0.;
     /// u* with ghost entries (displacement block).
     const dealii::TrilinosWrappers::MPI::BlockVector *target = nullptr;
+    /// The DoFs of the contact surfaces (sorted, locally relevant), which
+    /// carry no mass: a cell with such DoFs takes its mass matrix from the
+    /// redistributing rule of redistributed_mass_rule() (null or empty:
+    /// the consistent mass everywhere).
+    const std::vector<dealii::types::global_dof_index> *massless = nullptr;
     /// Commit only: v_n+1, and (a_m,n + a_m,n+1)/2, with ghost entries.
     const dealii::TrilinosWrappers::MPI::BlockVector *velocity = nullptr;
     const dealii::TrilinosWrappers::MPI::BlockVector *mean_acceleration =

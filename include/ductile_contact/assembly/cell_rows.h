@@ -74,6 +74,20 @@ namespace DuctileContact
     double        g1 = 0., g2 = 0.; ///< g_k'(s), g_k''(s)
   };
 
+  /**
+   * The quadrature of the mass matrix of a Q2 cell with nodes on a contact
+   * surface (@p massless_nodes, unit-cell positions): QGauss(@p n_gauss) in
+   * every reference direction except the midpoint rule in directions d
+   * chosen so that every such node lies on a face xi_d = 0 or 1 of one of
+   * them (greedily, the direction holding most nodes first). The Q2 shape
+   * functions of those faces vanish at xi_d = 1/2, so these nodes get no
+   * mass, and the midpoint rule, exact for linear functions, keeps the
+   * mass and centre of mass of a parallelepiped cell.
+   */
+  dealii::Quadrature<dim>
+  redistributed_mass_rule(const std::vector<dealii::Point<dim>> &massless_nodes,
+                          const unsigned int                     n_gauss);
+
   /// The coefficients of g_c gamma for a body that cracks.
   C0IPCoefficients
   crack_coefficients(const BodyParameters &body, const unsigned int degree);

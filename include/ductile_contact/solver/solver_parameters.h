@@ -24,6 +24,22 @@ namespace DuctileContact
     return t;
   }
 
+  /// Load stepping/Contact surface mass.
+  enum class ContactSurfaceMass
+  {
+    redistributed,
+    consistent
+  };
+
+  inline const NameTable<ContactSurfaceMass> &
+  contact_surface_mass_names()
+  {
+    static const NameTable<ContactSurfaceMass> t{
+      {ContactSurfaceMass::redistributed, "redistributed"},
+      {ContactSurfaceMass::consistent, "consistent"}};
+    return t;
+  }
+
   /**
    * Subsection `Load stepping`: quasi-static pseudo time t in [0, End time];
    * all boundary data are functions of t. A step whose Newton iteration
@@ -74,6 +90,8 @@ namespace DuctileContact
     TimeIntegration time_integration = TimeIntegration::quasi_static;
     /// rho_inf of the Bossak scheme, in [0, 1] (1: the trapezoidal rule).
     double spectral_radius = 1.;
+    /// Whether the contact surfaces carry mass (see declare()).
+    ContactSurfaceMass contact_surface_mass = ContactSurfaceMass::redistributed;
 
     void
     declare(dealii::ParameterHandler &prm);
