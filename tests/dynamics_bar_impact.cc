@@ -3,7 +3,7 @@
 // the P wave speed c = sqrt((kappa + 4 mu/3)/rho) = 1000 m/s is that of 1-D
 // theory; they start 1 mm apart with 1 m/s towards each other and touch
 // by frictionless mortar contact (tests/meshes/two_bars.msh, made by
-// `make_two_bars.py 10 1 0.1 0.001`). Theory: they touch at t = 0.5 ms,
+// `prm/meshes/make_two_bars.py 10 1 0.1 0.001`). Theory: they touch at t = 0.5 ms,
 // stay in contact for 2L/c = 2 ms under the force rho c v_0 A = 10 kN, and
 // part with their velocities reversed, without loss of energy.
 // With the redistributed contact mass (the default):
@@ -57,6 +57,7 @@ end
 subsection Contact pair 1
   set Slave boundary id  = 4
   set Master boundary id = 3
+  set Friction coefficient = 0
 end
 subsection Boundary conditions
   set Boundary ids = 2, 5, 6

@@ -42,6 +42,7 @@ declare -A variants=(
   [ironing]="default output relative direct"
   [ductile_notch]="default output relative direct best"
   [sent_coarse]="default output relative constant direct monotone linear"
+  [bar_impact]="default output"
 )
 declare -A settings=(
   [al]="subsection Contact pair 1;  set Enforcement = augmented Lagrangian;end"
@@ -55,7 +56,7 @@ declare -A settings=(
   [best]="subsection Load stepping;  set Predictor = best linear;end"
 )
 order=(box_compression gmsh_distorted_cube necking_bar two_bodies two_bodies_no_contact
-       block_on_plate hertz_sphere ironing ductile_notch sent_coarse)
+       block_on_plate hertz_sphere ironing ductile_notch sent_coarse bar_impact)
 
 jobs=("$@")
 if ((${#jobs[@]} == 0)); then

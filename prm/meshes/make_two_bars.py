@@ -13,7 +13,7 @@ Usage: make_two_bars.py N L W GAP OUTPUT.msh
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "prm", "meshes"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from gmsh_writer import write_gmsh  # noqa: E402
 
 n = int(sys.argv[1])
