@@ -33,7 +33,8 @@ namespace DuctileContact
   class TimeIntegrator;
 
   /**
-   * One quasi-static run (doc/model.md section 6): the mesh and the objects of
+   * One run, quasi-static or dynamic (doc/model.md section 6; the inertia
+   * of a dynamic run is TimeIntegrator's): the mesh and the objects of
    * the coupled problem are set up, then the load-step loop: a step is
    * solved by the CoupledSolver; a failed step is repeated with a smaller
    * increment (StepController), an accepted one commits the quadrature-
