@@ -19,26 +19,32 @@ namespace DuctileContact
   namespace
   {
     /// m_ab = int rho N_a N_b dV, a and b the nodes in the order of
-    /// LocalDofs::u_by_component.
+    /// LocalDofs::u_by_component: M = N^T (rho JxW N) with the shape values
+    /// N(q, a) gathered once (@p shapes and @p weighted are scratch).
     void
     cell_mass_matrix(const FEValues<dim> &fe_values,
                      const LocalDofs     &dofs,
                      const double         density,
+                     FullMatrix<double>  &shapes,
+                     FullMatrix<double>  &weighted,
                      FullMatrix<double>  &mass)
     {
       const std::vector<unsigned int> &nodes = dofs.u_by_component[0];
       const unsigned int               n     = nodes.size();
-      mass.reinit(n, n);
-      for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      const unsigned int               n_q   = fe_values.n_quadrature_points;
+      shapes.reinit(n_q, n);
+      weighted.reinit(n_q, n);
+      for (unsigned int q = 0; q < n_q; ++q)
         {
           const double w = density * fe_values.JxW(q);
           for (unsigned int a = 0; a < n; ++a)
             {
-              const double Na = w * fe_values.shape_value(nodes[a], q);
-              for (unsigned int b = 0; b < n; ++b)
-                mass(a, b) += Na * fe_values.shape_value(nodes[b], q);
+              shapes(q, a)   = fe_values.shape_value(nodes[a], q);
+              weighted(q, a) = w * shapes(q, a);
             }
         }
+      mass.reinit(n, n);
+      shapes.Tmmult(mass, weighted);
     }
 
     /// sum_b m_ab x_b^c for node a and component c, x the local values.
@@ -126,6 +132,8 @@ namespace DuctileContact
         cell_mass_matrix(scratch.mass_values.get_present_fe_values(),
                          dofs,
                          body.density,
+                         scratch.mass_shapes,
+                         scratch.mass_weighted,
                          scratch.mass);
       }
     else
@@ -138,7 +146,12 @@ namespace DuctileContact
           redistributed_mass_rule(massless_nodes, discretisation.degree + 1),
           update_values | update_JxW_values);
         fe_values.reinit(cell);
-        cell_mass_matrix(fe_values, dofs, body.density, scratch.mass);
+        cell_mass_matrix(fe_values,
+                         dofs,
+                         body.density,
+                         scratch.mass_shapes,
+                         scratch.mass_weighted,
+                         scratch.mass);
       }
 
     const FullMatrix<double> &mass   = scratch.mass;

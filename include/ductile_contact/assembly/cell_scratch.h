@@ -95,7 +95,7 @@ namespace DuctileContact
     dealii::Vector<double>    face_s_values;
     /// Inertia of a dynamic step: the cell's scalar mass matrix and the
     /// local values of the vectors it multiplies.
-    dealii::FullMatrix<double> mass;
+    dealii::FullMatrix<double> mass, mass_shapes, mass_weighted;
     dealii::Vector<double>     inertia_u, inertia_target, inertia_other;
   };
 
