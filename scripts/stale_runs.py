@@ -12,6 +12,12 @@ Newton's acceptance rules (source/solver/newton_solver.cc); a run is stale when 
 commit that changed the physics, other than in comments, help texts or formatting, is newer than
 the run's commit.
 
+A commit that changed those files without changing what a run computes
+unless the run uses the feature it adds (its code runs only when the
+feature is on, and every ctest output of the runs without it stayed as it
+was) is listed with its reason in benchmarks/neutral_commits and does not
+count.
+
 A run that stays on purpose (a historical comparison) is listed in a file
 'historical' in its folder or in one of its parents: one line of reason.
 Those are listed apart.
@@ -63,12 +69,23 @@ def changes_code(h):
     return joined(removed) != joined(added)
 
 
+def neutral_commits():
+    """The commits of benchmarks/neutral_commits (full hashes)."""
+    path = ROOT / "benchmarks" / "neutral_commits"
+    if not path.exists():
+        return set()
+    listed = [line.split()[0] for line in path.read_text().splitlines()
+              if line.strip() and not line.startswith("#")]
+    return {git("rev-parse", h) for h in listed}
+
+
 def physics_commits():
     """Commits that changed the physics (not only its comments), newest
-    first: (hash, unix time)."""
+    first, but those of benchmarks/neutral_commits: (hash, unix time)."""
     out = git("log", "--format=%H %ct", "--", *PHYSICS)
     commits = [(h, int(t)) for h, t in (line.split() for line in out.splitlines())]
-    return [(h, t) for h, t in commits if changes_code(h)]
+    neutral = neutral_commits()
+    return [(h, t) for h, t in commits if h not in neutral and changes_code(h)]
 
 
 def run_commit(folder):
