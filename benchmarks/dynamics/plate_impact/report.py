@@ -1,0 +1,38 @@
+#!/usr/bin/env python3
+"""results.md of run.sh: the coarse paper scene as an impact against dt."""
+import pathlib
+import re
+import sys
+
+here = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).parent)
+
+
+def table(path):
+    rows = [l.split() for l in open(path) if l.strip() and not l.startswith('#')]
+    return {h: [float(r[i]) for r in rows[1:]] for i, h in enumerate(rows[0])}
+
+
+lines = ["# The paper's scene as an impact (coarse mesh)", "",
+         "From `run.sh`; the commit each run ran is in its log.txt. K₀ the block's kinetic "
+         "energy at launch; the residual is W_ext − (K − K₀) − D_num − Ψ^e − Ψ^p − D_p − "
+         "g_c∫γ − D_f − D_c (W_ext = 0: nothing is prescribed but the clamp).", "",
+         "| speed [m/s] | dt [µs] | commit | K₀ [J] | residual at the end / K₀ | worst / K₀ | "
+         "plastic work [J] | largest α | largest s | friction [J] | K at 2 ms [J] | "
+         "Newton iterations | cut-backs | wall [s] |",
+         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+for run in sorted((here / "runs").glob("v*_dt*"), key=lambda p: (p.name.split("_")[0], -float(p.name.split("dt")[1]))):
+    if not (run / "statistics").exists():
+        continue
+    t = table(run / "statistics")
+    log = (run / "log.txt").read_text() if (run / "log.txt").exists() else ""
+    rev = re.search(r"revision\s+([0-9a-f]+)", log)
+    k0 = t["kinetic_energy"][0]
+    speed, dt = run.name[1:].split("_dt")
+    lines.append(
+        f"| {speed} | {float(dt) * 1e6:g} | {rev.group(1) if rev else '?'} | {k0:.5g} | "
+        f"{t['energy_residual'][-1] / k0:.3e} | {max(abs(r) for r in t['energy_residual']) / k0:.3e} | "
+        f"{t['plastic_work'][-1]:.4g} | {max(t['max_alpha']):.4g} | {max(t['max_s']):.4g} | "
+        f"{t['contact1_dissipation'][-1]:.4g} | {t['kinetic_energy'][-1]:.4g} | "
+        f"{int(sum(t['newton_iterations']))} | {int(sum(t['cutbacks']))} | {t['wall_time'][-1]:.1f} |")
+(here / "results.md").write_text("\n".join(lines) + "\n")
+print("\n".join(lines))
