@@ -20,7 +20,7 @@ lines = ["# The paper's scene as an impact (coarse mesh)", "",
          "plastic work [J] | largest α | largest s | friction [J] | K at 2 ms [J] | "
          "Newton iterations | cut-backs | wall [s] |",
          "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
-for run in sorted((here / "runs").glob("v*_dt*"), key=lambda p: (p.name.split("_")[0], -float(p.name.split("dt")[1]))):
+for run in sorted((here / "runs").glob("v*_dt*"), key=lambda p: (float(p.name[1:].split("_dt")[0]), -float(p.name.split("dt")[1]))):
     if not (run / "statistics").exists():
         continue
     t = table(run / "statistics")
