@@ -7,16 +7,20 @@
 # for dt = 20, 10, 5 us. report.py: the energy residual over K_0, the
 # plastic work, the largest alpha and s, the friction dissipation, K at
 # the end, Newton iterations, cut-backs and run time (results.md).
-# Usage: benchmarks/dynamics/plate_impact/run.sh [V] (default 60 m/s; 2
-# ranks, about 3 minutes). Finished runs are skipped.
+# Usage: benchmarks/dynamics/plate_impact/run.sh [V [MU]] (default 60 m/s
+# and the scene's friction coefficient 0.2; 2 ranks, about 3 minutes).
+# Finished runs are skipped.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 speed=${1:-60}
+mu=${2:-0.2}
+tag="v$speed"
+[[ $mu != 0.2 ]] && tag="v${speed}_mu$mu"
 require_build
 
 for dt in 2e-5 1e-5 5e-6; do
-  dir="$here/runs/v${speed}_dt$dt"
+  dir="$here/runs/${tag}_dt$dt"
   if run_finished "$dir"; then
     echo "== $speed m/s, dt = $dt (done)"
     continue
@@ -47,6 +51,9 @@ subsection Boundary 2
   set Constrained components =
   set Displacement           = 0; 0; 0
 end
+subsection Contact pair 1
+  set Friction coefficient = $mu
+end
 subsection Load stepping
   set End time          = 2e-3
   set Time step         = $dt
@@ -59,7 +66,7 @@ subsection Output
   set Interval  = 0
 end
 PRM
-  echo "== $speed m/s, dt = $dt"
+  echo "== $speed m/s, mu = $mu, dt = $dt"
   run_scene 2 "$dir"
 done
 /usr/bin/python3 "$here/report.py" "$here"
