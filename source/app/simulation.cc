@@ -344,7 +344,11 @@ namespace DuctileContact
   Simulation::write_output(const unsigned int step, const double t)
   {
     TimerOutput::Scope scope(timer, "output");
-    writer->write(step, t, u_ghosted, cell_quantities);
+    writer->write(step,
+                  t,
+                  u_ghosted,
+                  cell_quantities,
+                  dynamics ? &dynamics->current_velocity() : nullptr);
     if (contact)
       contact->write_output(parameters.output.directory,
                             parameters.output.format,

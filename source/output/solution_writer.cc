@@ -6,6 +6,7 @@
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/la_parallel_block_vector.h>
 #include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
 
 #include <ductile_contact/materials/neo_hooke.h>
 #include <ductile_contact/output/solution_writer.h>
@@ -20,6 +21,59 @@ namespace DuctileContact
 
   namespace
   {
+    /// @p v as DataOut needs it: a ghosted block vector of the non-empty
+    /// blocks. DataOut needs, per vector block, one contiguous range of
+    /// owned DoFs on each rank (deal.II 9.4 builds a partitioner from it
+    /// and, given the several ranges of a component-wise numbered flat
+    /// vector, hangs in the index-owner exchange on several ranks). Each of
+    /// our blocks is contiguous per rank; empty blocks are dropped (DataOut
+    /// splits by block size, and an empty block covers no DoF).
+    LinearAlgebra::distributed::BlockVector<double>
+    present_blocks(const TrilinosWrappers::MPI::BlockVector &v,
+                   const Discretisation                     &discretisation)
+    {
+      LinearAlgebra::distributed::BlockVector<double> ghosted;
+      std::vector<unsigned int>                       present;
+      for (unsigned int b = 0; b < Block::n_blocks; ++b)
+        if (discretisation.dofs_per_block[b] > 0)
+          present.push_back(b);
+      ghosted.reinit(present.size());
+      for (unsigned int k = 0; k < present.size(); ++k)
+        {
+          const unsigned int b = present[k];
+          ghosted.block(k).reinit(
+            discretisation.owned_partitioning[b],
+            discretisation.relevant_partitioning[b],
+            discretisation.triangulation.get_communicator());
+          for (const auto i : discretisation.owned_partitioning[b])
+            ghosted.block(k)[i] = v.block(b)[i];
+        }
+      ghosted.collect_sizes();
+      ghosted.update_ghost_values();
+      return ghosted;
+    }
+
+    /// The displacement components of a vector of the [u | alpha | s]
+    /// layout as one vector field (the velocity of a dynamic run).
+    class DisplacementPart : public DataPostprocessorVector<dim>
+    {
+    public:
+      explicit DisplacementPart(const std::string &name)
+          : DataPostprocessorVector<dim>(name, update_values)
+      {
+      }
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<Vector<double>>                &computed) const override
+      {
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          for (unsigned int d = 0; d < dim; ++d)
+            computed[q](d) = inputs.solution_values[q](d);
+      }
+    };
+
     /// ln(A) of a symmetric positive definite A, through its eigenvalues;
     /// zero for a cell without averages (A = 0).
     SymmetricTensor<2, dim>
@@ -69,7 +123,8 @@ namespace DuctileContact
   SolutionWriter::write(const unsigned int                        step,
                         const double                              time,
                         const TrilinosWrappers::MPI::BlockVector &u,
-                        const CellQuantities                     &cells)
+                        const CellQuantities                     &cells,
+                        const TrilinosWrappers::MPI::BlockVector *velocity)
   {
     const auto   &tria = discretisation.triangulation;
     Vector<float> body(tria.n_active_cells()), rank(tria.n_active_cells());
@@ -90,34 +145,19 @@ namespace DuctileContact
                      DataComponentInterpretation::component_is_part_of_vector);
     interpretation.push_back(DataComponentInterpretation::component_is_scalar);
     interpretation.push_back(DataComponentInterpretation::component_is_scalar);
-    // DataOut needs, per vector block, one contiguous range of owned DoFs on
-    // each rank (deal.II 9.4 builds a partitioner from it and, given the
-    // several ranges of a component-wise numbered flat vector, hangs in the
-    // index-owner exchange on several ranks). Each of our blocks is
-    // contiguous per rank, so hand it a ghosted block vector of the
-    // non-empty blocks (empty blocks are dropped: DataOut splits by block
-    // size, and an empty block covers no DoF).
-    LinearAlgebra::distributed::BlockVector<double> ghosted;
-    std::vector<unsigned int>                       present;
-    for (unsigned int b = 0; b < Block::n_blocks; ++b)
-      if (discretisation.dofs_per_block[b] > 0)
-        present.push_back(b);
-    ghosted.reinit(present.size());
-    for (unsigned int k = 0; k < present.size(); ++k)
-      {
-        const unsigned int b = present[k];
-        ghosted.block(k).reinit(discretisation.owned_partitioning[b],
-                                discretisation.relevant_partitioning[b],
-                                tria.get_communicator());
-        for (const auto i : discretisation.owned_partitioning[b])
-          ghosted.block(k)[i] = u.block(b)[i];
-      }
-    ghosted.collect_sizes();
-    ghosted.update_ghost_values();
+    const LinearAlgebra::distributed::BlockVector<double> ghosted =
+      present_blocks(u, discretisation);
     data_out.add_data_vector(ghosted,
                              names,
                              DataOut<dim>::type_dof_data,
                              interpretation);
+    LinearAlgebra::distributed::BlockVector<double> velocity_data;
+    const DisplacementPart                          velocity_field("velocity");
+    if (velocity)
+      {
+        velocity_data = present_blocks(*velocity, discretisation);
+        data_out.add_data_vector(velocity_data, velocity_field);
+      }
     data_out.add_data_vector(cells.von_mises, "von_mises_kirchhoff");
     data_out.add_data_vector(cells.mean_stress, "mean_kirchhoff_stress");
     data_out.add_data_vector(cells.J, "J");

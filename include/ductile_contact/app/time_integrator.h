@@ -91,6 +91,13 @@ namespace DuctileContact
       return {&velocity, &acceleration, &inertial_acceleration};
     }
 
+    /// v_n of the accepted state (owned entries).
+    const dealii::TrilinosWrappers::MPI::BlockVector &
+    current_velocity() const
+    {
+      return velocity;
+    }
+
     /// Copies of vectors() with ghost entries.
     std::vector<dealii::TrilinosWrappers::MPI::BlockVector>
     ghosted_vectors() const;

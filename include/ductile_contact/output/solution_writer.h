@@ -27,7 +27,8 @@ namespace DuctileContact
    * solution.xdmf. Nodes are never merged: DataOut writes each cell's
    * nodes, and the HDF5 filter is told not to join nodes of equal
    * coordinates, which would glue bodies in contact. Point data: displacement
-   * (for Warp By Vector), alpha, s. Cell data (averages over the quadrature
+   * (for Warp By Vector), alpha, s, and in a dynamic run the velocity
+   * [m/s]. Cell data (averages over the quadrature
    * points, from SystemAssembler's CellQuantities): von Mises equivalent and
    * mean of the Kirchhoff stress [Pa], J, the crack driving force H =
    * -g'(s) psi^+_H [Pa], the stress triaxiality sigma_m / sigma_eq of the
@@ -47,12 +48,15 @@ namespace DuctileContact
                    const std::map<dealii::types::material_id,
                                   const BodyParameters *> &bodies);
 
-    /// @p u with ghost entries. Collective; also rewrites solution.pvd.
+    /// @p u with ghost entries; @p velocity (owned entries, dynamic runs)
+    /// adds the node field velocity. Collective; also rewrites
+    /// solution.pvd.
     void
     write(const unsigned int                                step,
           const double                                      time,
           const dealii::TrilinosWrappers::MPI::BlockVector &u,
-          const CellQuantities                             &cells);
+          const CellQuantities                             &cells,
+          const dealii::TrilinosWrappers::MPI::BlockVector *velocity = nullptr);
 
     /// The mesh has changed since the last output: hdf5 writes it again.
     void
