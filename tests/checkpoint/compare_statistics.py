@@ -9,7 +9,8 @@ the partition through round-off and the preconditioner) to 1e-6 of the
 column's scale: for forces the largest force of the table, for lengths the
 largest displacement or length, for energies the largest energy, for
 contact pressures the largest pressure, for alpha columns the largest
-alpha, otherwise the column's own largest value. (A quantity that is
+alpha, for momentum components the largest momentum component, otherwise
+the column's own largest value. (A quantity that is
 round-off itself, such as a lateral force of 1e-4 N in a scene loaded with
 8 kN, is then compared at the scale it is round-off of.)
 
@@ -47,6 +48,8 @@ def family(column):
         return "pressure"
     if "alpha" in column:
         return "alpha"
+    if column.startswith("momentum"):
+        return "momentum"
     return column
 
 
