@@ -22,7 +22,8 @@
 //    order in dt).
 // With the consistent mass the same impact chatters and gains energy (more
 // than K_0 at dt = 20 us): printed as the reason for the default.
-// Run on 1, 2 and 3 MPI ranks with identical output.
+// Run on 1 and 2 MPI ranks with identical output (3 ranks:
+// checkpoint/dynamic_resume).
 #include "tests.h"
 
 using namespace dealii;
