@@ -16,12 +16,7 @@
 set -u
 mpiexec=$1 exe=$2 prm=$3 mesh=$4
 here=$(cd "$(dirname "$0")" && pwd)
-if [[ $(id -u) -eq 0 ]]; then
-  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-fi
-export OMPI_MCA_btl_vader_single_copy_mechanism=none OPENBLAS_NUM_THREADS=1
-export OMPI_MCA_mpi_yield_when_idle=1
-fail() { echo "FAIL: $*"; exit 1; }
+source "$here/common.sh"
 
 # scene NAME END_TIME CHECKPOINT_INTERVAL DIRECTORY [TIME_INTEGRATION]
 scene() {
@@ -45,14 +40,6 @@ subsection Checkpoint
 end
 EOT
   } > "$1.prm"
-}
-run() { # NP PRM [--resume]; screen output in PRM.log
-  local np=$1 prm=$2 start=$SECONDS code
-  shift 2
-  "$mpiexec" --oversubscribe -np "$np" "$exe" "$@" "$prm" > "${prm%.prm}.log" 2>&1
-  code=$?
-  echo "$prm $* on $np rank(s): exit code $code, $((SECONDS - start)) s"
-  return $code
 }
 rm -rf full part ./*.prm ./*.log
 

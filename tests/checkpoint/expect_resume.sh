@@ -20,13 +20,7 @@
 set -u
 mpiexec=$1 exe=$2 scene=$3
 here=$(cd "$(dirname "$0")" && pwd)
-if [[ $(id -u) -eq 0 ]]; then
-  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-fi
-# 3 ranks on 2 cores: ranks that wait yield the core instead of polling.
-export OMPI_MCA_btl_vader_single_copy_mechanism=none OPENBLAS_NUM_THREADS=1
-export OMPI_MCA_mpi_yield_when_idle=1
-fail() { echo "FAIL: $*"; exit 1; }
+source "$here/common.sh"
 compare() { python3 "$here/compare_statistics.py" "$1" "$2" || fail "$3"; }
 
 # scene NAME END_TIME CHECKPOINT_INTERVAL DIRECTORY [extra lines]
@@ -51,14 +45,6 @@ subsection Checkpoint
 end
 EOT
   } > "$1.prm"
-}
-run() { # NP PRM [--resume]; screen output in PRM.log
-  local np=$1 prm=$2 start=$SECONDS code
-  shift 2
-  "$mpiexec" --oversubscribe -np "$np" "$exe" "$@" "$prm" > "${prm%.prm}.log" 2>&1
-  code=$?
-  echo "$prm $* on $np rank(s): exit code $code, $((SECONDS - start)) s"
-  return $code
 }
 rm -rf full killed signalled nothing_here ./*.prm ./*.log
 
