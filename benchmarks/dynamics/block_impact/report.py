@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""results.md of run.sh: the paper's scene as an impact against dt."""
+import pathlib
+import re
+import sys
+
+here = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).parent)
+
+
+def table(path):
+    rows = [l.split() for l in open(path) if l.strip() and not l.startswith('#')]
+    return {h: [float(r[i]) for r in rows[1:]] for i, h in enumerate(rows[0])}
+
+
+def key(run):
+    """(speed, dt) from runs/v<speed>_dt<dt>."""
+    m = re.match(r"v([0-9.]+)_dt([0-9.e-]+)$", run.name)
+    return float(m.group(1)), float(m.group(2))
+
+
+def revision(run):
+    text = (run / "log.txt").read_text() if (run / "log.txt").exists() else ""
+    m = re.search(r"revision (\S+)", text)
+    return m.group(1).rstrip(",") if m else "?"
+
+
+def wall(run):
+    m = re.search(r"Total wallclock time elapsed since start\s*\|\s*([0-9.]+)s",
+                  (run / "screen.txt").read_text())
+    return float(m.group(1)) if m else float("nan")
+
+
+# The quantities compared across dt, at the end of the run.
+QOIS = [("plastic_work", "W_p [J]"), ("contact1_dissipation", "D_c [J]"),
+        ("kinetic_energy", "K [J]"), ("stored_energy", "Ψ^e [J]"),
+        ("numerical_dissipation", "D_num [J]"), ("max_alpha", "largest α"),
+        ("max_s_points", "largest s")]
+
+lines = ["# The paper's scene as an impact", "",
+         "From `run.sh` (prm/block_impact.prm); the commit each run ran is in its log.txt. "
+         "K₀ the block's kinetic energy at launch; the residual is W_ext − (K − K₀) − D_num − "
+         "Ψ^e − Ψ^p − D_p − g_c∫γ − D_f − D_c (W_ext = 0: nothing is prescribed but the "
+         "clamp), its worst the largest magnitude over the steps. Values at the end (2 ms).", ""]
+runs = [r for r in (here / "runs").glob("v*_dt*") if (r / "statistics").exists()]
+for speed in sorted({key(r)[0] for r in runs}):
+    group = sorted((r for r in runs if key(r)[0] == speed), key=lambda r: -key(r)[1])
+    data = {r: table(r / "statistics") for r in group}
+    finest = data[group[-1]]
+    lines += [f"## {speed:g} m/s", "",
+              "| dt [µs] | commit | end time [ms] | K₀ [J] | residual / K₀ | worst / K₀ | "
+              + " | ".join(q[1] for q in QOIS)
+              + " | min D_p,loc | Newton iterations | cut-backs | wall [s] |",
+              "|---" * (12 + len(QOIS)) + "|"]
+    for r in group:
+        s = data[r]
+        k0 = s["kinetic_energy"][0]
+        worst = max(abs(x) for x in s["energy_residual"])
+        lines.append(
+            f"| {key(r)[1] * 1e6:g} | {revision(r)} | {s['time'][-1] * 1e3:.3g} | {k0:.4g} | "
+            f"{s['energy_residual'][-1] / k0:.3e} | {worst / k0:.3e} | "
+            + " | ".join(f"{s[q][-1]:.5g}" for q, _ in QOIS)
+            + f" | {min(s['min_plastic_dissipation']):.3g} | {sum(s['newton_iterations']):.0f} | "
+            f"{sum(s['cutbacks']):.0f} | {wall(r):.0f} |")
+    lines += ["", "Differences to the finest run at the end (the same columns):", "",
+              "| dt [µs] | " + " | ".join(q[1] for q in QOIS) + " |",
+              "|---" * (1 + len(QOIS)) + "|"]
+    for r in group[:-1]:
+        s = data[r]
+        lines.append(f"| {key(r)[1] * 1e6:g} | "
+                     + " | ".join(f"{s[q][-1] - finest[q][-1]:.3g}" for q, _ in QOIS) + " |")
+    lines.append("")
+(here / "results.md").write_text("\n".join(lines) + "\n")
+print("\n".join(lines))
