@@ -7,19 +7,24 @@
 # for dt = 20, 10, 5 us. report.py: the energy residual over K_0, the
 # plastic work, the largest alpha and s, the friction dissipation, K at
 # the end, Newton iterations, cut-backs and run time (results.md).
-# Usage: benchmarks/dynamics/plate_impact/run.sh [V [MU]] (default 60 m/s
-# and the scene's friction coefficient 0.2; 2 ranks, about 3 minutes).
+# Usage: benchmarks/dynamics/plate_impact/run.sh [V [MU [RHO [DTS]]]]
+# (default 60 m/s, the scene's friction coefficient 0.2, the high-frequency
+# spectral radius 1 and the steps "2e-5 1e-5 5e-6"; 2 ranks, about 3
+# minutes).
 # Finished runs are skipped.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 speed=${1:-60}
 mu=${2:-0.2}
+rho=${3:-1}
+steps=${4:-2e-5 1e-5 5e-6}
 tag="v$speed"
-[[ $mu != 0.2 ]] && tag="v${speed}_mu$mu"
+[[ $mu != 0.2 ]] && tag="${tag}_mu$mu"
+[[ $rho != 1 ]] && tag="${tag}_rho$rho"
 require_build
 
-for dt in 2e-5 1e-5 5e-6; do
+for dt in $steps; do
   dir="$here/runs/${tag}_dt$dt"
   if run_finished "$dir"; then
     echo "== $speed m/s, dt = $dt (done)"
@@ -59,6 +64,7 @@ subsection Load stepping
   set Time step         = $dt
   set Minimum time step = 1e-9
   set Time integration  = Bossak
+  set High-frequency spectral radius = $rho
   set Predictor         = constant
 end
 subsection Output
@@ -66,7 +72,7 @@ subsection Output
   set Interval  = 0
 end
 PRM
-  echo "== $speed m/s, mu = $mu, dt = $dt"
+  echo "== $speed m/s, mu = $mu, rho_inf = $rho, dt = $dt"
   run_scene 2 "$dir"
 done
 /usr/bin/python3 "$here/report.py" "$here"
