@@ -22,8 +22,9 @@
 //    order in dt).
 // With the consistent mass the same impact chatters and gains energy (more
 // than K_0 at dt = 20 us): printed as the reason for the default.
-// Run on 1 and 2 MPI ranks with identical output (3 ranks:
-// checkpoint/dynamic_resume).
+// On 2 MPI ranks only the first run (dt = 20 us), whose lines must equal
+// those of the 1-rank output (3 ranks: checkpoint/dynamic_resume); the
+// convergence and the consistent mass are checked on 1 rank.
 #include "tests.h"
 
 using namespace dealii;
@@ -101,9 +102,12 @@ main(int argc, char **argv)
   std::ofstream                    out = Testing::open_output();
   out << std::setprecision(5);
 
-  double error[2] = {0., 0.};
+  const bool serial   = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1;
+  double     error[2] = {0., 0.};
   for (const unsigned int k : {0u, 1u})
     {
+      if (k > 0 && !serial)
+        break;
       const double dt     = k == 0 ? 2e-5 : 1e-5;
       const auto   stats  = Testing::run_scene(impact_prm(dt, "redistributed"),
                                             "impact_" + std::to_string(k));
@@ -168,6 +172,8 @@ main(int argc, char **argv)
                              kinetic >= 0.98 && max_p < 1e-9 * momentum)
           << std::endl;
     }
+  if (!serial)
+    return 0;
   out << "energy error ratio " << error[0] / error[1]
       << ", above 2.5 (second order): "
       << Testing::yes_no(error[0] > 0. && error[0] / error[1] > 2.5)
