@@ -40,7 +40,7 @@ lines = ["# The paper's scene as an impact", "",
          "From `run.sh` (prm/block_impact.prm); the commit each run ran is in its log.txt. "
          "K₀ the block's kinetic energy at launch; the residual is W_ext − (K − K₀) − D_num − "
          "Ψ^e − Ψ^p − D_p − g_c∫γ − D_f − D_c (W_ext = 0: nothing is prescribed but the "
-         "clamp), its worst the largest magnitude over the steps. Values at the end (2 ms).", ""]
+         "clamp), its worst the largest magnitude over the steps. Values at the end (1 ms).", ""]
 runs = [r for r in (here / "runs").glob("v*_dt*") if (r / "statistics").exists()]
 for speed in sorted({key(r)[0] for r in runs}):
     group = sorted((r for r in runs if key(r)[0] == speed), key=lambda r: -key(r)[1])

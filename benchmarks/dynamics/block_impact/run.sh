@@ -2,14 +2,14 @@
 # The paper's scene as an impact, converged in dt: prm/block_impact.prm (the
 # block launched at the clamped plate, plasticity, the phase field with the
 # variational driver, Coulomb friction, Bossak with rho_inf = 0.8) at V m/s
-# for dt = 20, 10, 5 us (and 2.5 us with a fourth argument), field output
+# for dt = 20, 10, 5 us (or DTS), field output
 # every 50 us in the 10 us run (the pictures). report.py: results.md (per
 # run the energies at the end, the residual over K_0, the largest alpha and
 # s, Newton iterations, run time; the differences to the finest run);
 # plot.py: force and energies over time, and run time against the
 # difference in dt (results_V.png).
 # Usage: benchmarks/dynamics/block_impact/run.sh [V [DTS]] (default 120 m/s
-# and "2e-5 1e-5 5e-6"; 2 ranks, about 30 minutes). Finished runs are
+# and "2e-5 1e-5 5e-6"; 2 ranks, about 50 minutes). Finished runs are
 # skipped.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
