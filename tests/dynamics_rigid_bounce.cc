@@ -1,0 +1,134 @@
+// An elastic bar bounces off a rigid foundation (doc/model.md section 6.5):
+// the upper bar of prm/bar_impact.prm (1 m, 0.1 x 0.1 m, 10 Q2 cells of
+// tests/meshes/two_bars.msh, rho = 1000 kg/m^3, sides on rollers, so that
+// the P wave speed is c = 1000 m/s of 1-D theory) falls at v_0 = 2 m/s onto
+// the lower bar's top face, clamped in x, y and z: a rigid, flat
+// foundation 1 mm below it. Frictionless mortar contact, the trapezoidal
+// rule, massless contact surfaces. 1-D theory: contact from t = 0.5 ms for
+// 2L/c = 2 ms under the force rho c v_0 A = 20 kN, then the bar leaves at
+// +v_0, with all its energy kinetic again.
+// Checks, at dt = 20 and 10 us:
+//  - the contact closes once and opens once, after 2L/c within 3 %, under a
+//    force within 2 % of rho c v_0 A (its mean over the contact but 0.25 ms
+//    at either end);
+//  - the bar leaves at +v_0 within 2 % (the mean velocity of its free end
+//    from the release to the end), with at least 98 % of K_0 as kinetic
+//    energy;
+//  - the foundation does not move: the lower bar's free end stays at 0 to
+//    1e-12 m (nothing but the contact could move it);
+//  - the energy error at the end, -(energy_residual) = K + Psi - K_0,
+//    shrinks by more than 2.5 when dt halves (second order in dt).
+// One MPI rank (the contact terms on 1, 2 and 3 ranks: dynamics_bar_impact
+// and checkpoint/dynamic_resume).
+#include "tests.h"
+
+using namespace dealii;
+
+namespace
+{
+  constexpr double v0 = 2., force = 1000. * 1000. * v0 * 0.01, duration = 2e-3;
+
+  std::string
+  bounce_prm(const double dt)
+  {
+    return Testing::shipped_scene("bar_impact.prm") + R"(
+subsection Mesh
+  subsection Gmsh
+    set File name = )" SOURCE_DIR R"(/meshes/two_bars.msh
+  end
+end
+subsection Boundary conditions
+  set Boundary ids = 1, 2, 3, 5, 6
+end
+subsection Boundary 3
+  # the foundation: the lower bar's top face, the master surface, clamped
+  set Constrained components = x, y, z
+end
+subsection Load stepping
+  set End time  = 3e-3
+  set Time step = )" +
+           std::to_string(dt) +
+           R"(
+end
+subsection Output
+  set Interval = 0
+end
+)";
+  }
+} // namespace
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::ofstream                    out = Testing::open_output();
+  out << std::setprecision(5);
+
+  double error[2] = {0., 0.};
+  for (const unsigned int k : {0u, 1u})
+    {
+      const double dt = k == 0 ? 2e-5 : 1e-5;
+      const auto   stats =
+        Testing::run_scene(bounce_prm(dt), "bounce_" + std::to_string(k));
+      const auto       &t        = stats.at("time");
+      const auto       &active   = stats.at("contact1_active_nodes");
+      const std::size_t last     = t.size() - 1;
+      unsigned int      closings = 0, openings = 0;
+      double            first = 0., opened = 0., sum = 0., foundation = 0.;
+      unsigned int      n = 0;
+      for (std::size_t s = 1; s <= last; ++s)
+        {
+          if (active[s] > 0 && active[s - 1] == 0)
+            {
+              ++closings;
+              first = t[s - 1];
+            }
+          if (active[s] == 0 && active[s - 1] > 0)
+            {
+              ++openings;
+              opened = t[s - 1];
+            }
+          foundation = std::max(foundation, std::abs(stats.at("u1_z")[s]));
+        }
+      std::size_t release = 0;
+      for (std::size_t s = 0; s <= last; ++s)
+        {
+          if (t[s] > first + 0.25e-3 && t[s] < opened - 0.25e-3)
+            {
+              sum += std::abs(stats.at("contact1_force_z")[s]);
+              ++n;
+            }
+          if (t[s] <= opened)
+            release = s;
+        }
+      const double velocity =
+        (stats.at("u2_z")[last] - stats.at("u2_z")[release]) /
+        (t[last] - t[release]);
+      const double kinetic =
+        stats.at("kinetic_energy")[last] / stats.at("kinetic_energy")[0];
+      error[k] = -stats.at("energy_residual")[last];
+      std::cout << "dt " << dt << ": contact from " << first << " to " << opened
+                << ", " << closings << " closing(s), " << openings
+                << " opening(s), energy error " << error[k] << " of K_0 "
+                << stats.at("kinetic_energy")[0] << ", foundation moved "
+                << foundation << std::endl;
+      out << "dt " << dt << ": contact duration / (2L/c) "
+          << (opened - first) / duration << ", mean force / (rho c v0 A) "
+          << sum / n / force << ", velocity after / v_0 " << velocity / v0
+          << ", K at the end / K_0 " << kinetic << std::endl;
+      out << "  closes once, opens once, after 2L/c within 3 %, force within "
+             "2 %, leaves at +v_0 (2 %), K >= 0.98 K_0, foundation at rest: "
+          << Testing::yes_no(closings == 1 && openings == 1 &&
+                             std::abs((opened - first) / duration - 1.) <
+                               0.03 &&
+                             std::abs(sum / n / force - 1.) < 0.02 &&
+                             std::abs(velocity - v0) < 0.02 * v0 &&
+                             kinetic >= 0.98 && foundation < 1e-12)
+          << std::endl;
+    }
+  out << "energy error ratio " << error[0] / error[1]
+      << ", above 2.5 (second order): "
+      << Testing::yes_no(error[0] > 0. && error[0] / error[1] > 2.5)
+      << std::endl;
+}
