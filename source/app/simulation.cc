@@ -18,10 +18,12 @@
 #include <ductile_contact/solver/linear_solver.h>
 #include <ductile_contact/solver/newton_solver.h>
 
+#include <algorithm>
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -109,6 +111,33 @@ namespace DuctileContact
 
 
 
+  double
+  Simulation::limit_local_error(const TrilinosWrappers::MPI::BlockVector &u,
+                                const TrilinosWrappers::MPI::BlockVector &u_old,
+                                const double                              dt,
+                                StepReport &report)
+  {
+    const LoadSteppingParameters &ls = parameters.load_stepping;
+    if (!dynamics)
+      return std::numeric_limits<double>::infinity();
+    local_error            = dynamics->local_error(u, u_old, dt);
+    const double tolerance = ls.local_error_tolerance;
+    if (tolerance <= 0. || local_error <= 0.)
+      return std::numeric_limits<double>::infinity();
+    const double factor = 0.9 * std::cbrt(tolerance / local_error);
+    if (local_error > tolerance && dt > 2. * ls.minimum_time_step)
+      {
+        std::ostringstream s;
+        s << "local error estimate " << local_error
+          << " above 'Load stepping/Local error tolerance' = " << tolerance;
+        report.converged = false;
+        report.failure   = s.str();
+      }
+    return factor;
+  }
+
+
+
   void
   Simulation::setup()
   {
@@ -183,10 +212,12 @@ namespace DuctileContact
               massless.push_back(c.slave_boundary_id);
               massless.push_back(c.master_boundary_id);
             }
-        dynamics = std::make_unique<TimeIntegrator>(parameters.load_stepping,
-                                                    parameters.bodies,
-                                                    *discretisation,
-                                                    massless);
+        dynamics =
+          std::make_unique<TimeIntegrator>(parameters.load_stepping,
+                                           parameters.bodies,
+                                           parameters.boundary_conditions,
+                                           *discretisation,
+                                           massless);
       }
     if (parameters.mesh.adaptive.enabled)
       adaptation = std::make_unique<MeshAdaptation>(parameters.mesh.adaptive,
@@ -615,12 +646,17 @@ namespace DuctileContact
                                    : nullptr};
         StepReport     report = solver->solve_step(step_data, u, alternatives);
 
+        double error_factor = std::numeric_limits<double>::infinity();
         if (report.converged)
-          limit_phase_field_increment(u, u_old, dt_try, report);
+          {
+            limit_phase_field_increment(u, u_old, dt_try, report);
+            error_factor = limit_local_error(u, u_old, dt_try, report);
+          }
         if (!report.converged)
           {
-            u                = u_old;
-            const bool go_on = controller.reject(t, dt_try);
+            u = u_old;
+            const bool go_on =
+              controller.reject(t, dt_try, std::clamp(error_factor, 0.2, 0.5));
             pcout << "  step " << step + 1 << " at t = " << t + dt_try
                   << " failed (" << report.failure
                   << "); cutting back to dt = " << controller.increment()
@@ -671,7 +707,7 @@ namespace DuctileContact
         last_dt = dt_try;
         accept_step(step_data, u_old);
         record_step(step, t, dt_try, report, controller.cutbacks());
-        controller.accept(dt_try, report.iterations);
+        controller.accept(dt_try, report.iterations, error_factor);
         refinements = 0;
 
         const bool stop = stop_requested(comm);

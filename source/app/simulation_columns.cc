@@ -171,6 +171,8 @@ namespace DuctileContact
       statistics.add("tangent_error", defined(report.tangent_error));
     statistics.add("linear_iterations", report.linear_iterations);
     statistics.add("cutbacks", cutbacks);
+    if (dynamics)
+      statistics.add("local_error", local_error);
     // Cumulative wall time of the phases, for work-precision studies.
     const Times times = cumulative_times();
     statistics.add("assembly_time", times.assembly);

@@ -21,9 +21,11 @@ namespace DuctileContact
 
 
   bool
-  StepController::reject(const double t, const double dt_try)
+  StepController::reject(const double t,
+                         const double dt_try,
+                         const double factor)
   {
-    dt = 0.5 * dt_try;
+    dt = factor * dt_try;
     ++n_cutbacks_of_step;
     if (stalled_failures == 0 || t - stall_start > 1.e-3 * parameters.time_step)
       {
@@ -38,7 +40,8 @@ namespace DuctileContact
 
   void
   StepController::accept(const double       dt_try,
-                         const unsigned int newton_iterations)
+                         const unsigned int newton_iterations,
+                         const double       largest_factor)
   {
     // A run of accepted steps at one increment; a cut-back or a change of
     // the increment starts a new run.
@@ -57,5 +60,6 @@ namespace DuctileContact
       }
     else
       dt = dt_try;
+    dt = std::min(dt, largest_factor * dt_try);
   }
 } // namespace DuctileContact

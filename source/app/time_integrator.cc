@@ -1,4 +1,5 @@
 #include <deal.II/base/function_parser.h>
+#include <deal.II/dofs/dof_tools.h>
 
 #include <ductile_contact/app/time_integrator.h>
 
@@ -14,6 +15,7 @@ namespace DuctileContact
   TimeIntegrator::TimeIntegrator(
     const LoadSteppingParameters          &parameters,
     const std::deque<BodyParameters>      &bodies,
+    const std::deque<BoundaryCondition>   &boundary_conditions,
     const Discretisation                  &discretisation,
     const std::vector<types::boundary_id> &massless_boundaries)
       : alpha_b((parameters.spectral_radius - 1.) /
@@ -21,6 +23,7 @@ namespace DuctileContact
       , beta(0.25 * (1. - alpha_b) * (1. - alpha_b))
       , gamma(0.5 - alpha_b)
       , bodies(bodies)
+      , boundary_conditions(boundary_conditions)
       , discretisation(discretisation)
       , massless_boundaries(massless_boundaries)
   {
@@ -79,6 +82,20 @@ namespace DuctileContact
     std::sort(massless.begin(), massless.end());
     massless.erase(std::unique(massless.begin(), massless.end()),
                    massless.end());
+
+    // The owned u DoFs with mass that no boundary condition prescribes (u
+    // is block 0: its global and block indices agree).
+    const auto &handler = discretisation.dof_handler;
+    IndexSet    displacements(handler.n_dofs());
+    displacements.add_range(0, discretisation.owned_partitioning[0].size());
+    measured = discretisation.locally_owned_dofs & displacements;
+    IndexSet without_mass(handler.n_dofs());
+    without_mass.add_indices(massless.begin(), massless.end());
+    measured.subtract_set(without_mass);
+    for (const BoundaryCondition &bc : boundary_conditions)
+      if (bc.has_dirichlet())
+        measured.subtract_set(DoFTools::extract_boundary_dofs(
+          handler, bc.dirichlet_mask(), {bc.boundary_id}));
   }
 
 
@@ -199,6 +216,34 @@ namespace DuctileContact
     terms.velocity          = &velocity_ghosted;
     terms.mean_acceleration = &mean_acceleration;
     return terms;
+  }
+
+
+
+  double
+  TimeIntegrator::local_error(const BlockVector &u,
+                              const BlockVector &u_n,
+                              const double       dt) const
+  {
+    // a_n+1 - a_n = (u - u_n - dt v_n - dt^2 a_n/2)/(beta dt^2), so
+    // e = (beta - 1/6)/beta (u - u_n - dt v_n - dt^2 a_n/2).
+    const unsigned int d        = Block::displacement;
+    const auto        &v        = velocity.block(d);
+    const auto        &a        = acceleration.block(d);
+    const double       factor   = (beta - 1. / 6.) / beta;
+    double             local[2] = {0., 0.};
+    for (const auto i : measured)
+      {
+        const double step = u.block(d)(i) - u_n.block(d)(i);
+        const double e    = factor * (step - dt * v(i) - 0.5 * dt * dt * a(i));
+        local[0]          = std::max(local[0], std::abs(e));
+        local[1]          = std::max(local[1], std::abs(step));
+      }
+    double global[2];
+    Utilities::MPI::max(ArrayView<const double>(local, 2),
+                        discretisation.dof_handler.get_communicator(),
+                        ArrayView<double>(global, 2));
+    return global[1] > 0. ? global[0] / global[1] : 0.;
   }
 
 

@@ -112,6 +112,23 @@ namespace DuctileContact
       "ones (statistics column numerical_dissipation). a_B = (rho_inf - "
       "1)/(rho_inf + 1), gamma = 1/2 - a_B, beta = (1 - a_B)^2/4.",
       Patterns::Double(0., 1.));
+    prm.add_parameter(
+      "Local error tolerance",
+      local_error_tolerance,
+      "Dynamic runs: the step size follows the local error estimate of "
+      "Zienkiewicz & Xie (1991), e = (beta - 1/6) dt^2 (a_n+1 - a_n) per "
+      "DoF, measured as the largest |e| over the largest displacement "
+      "increment of the step, both over the DoFs that carry mass and are not "
+      "prescribed (statistics column local_error) [-]. A converged step "
+      "whose estimate exceeds this is cut back to 0.9 (tolerance/estimate)^"
+      "(1/3) of its size (at least by half, at most to a fifth), and the next "
+      "increment is at most that factor times the last one (and never above "
+      "Time step): the steps shrink where the accelerations change fast, "
+      "at an impact and a release, and grow back in free motion. Steps "
+      "within twice the Minimum time step are accepted whatever their "
+      "estimate. 0: no control (the step is cut back only when Newton "
+      "fails).",
+      Patterns::Double(0.));
     add_option(
       prm,
       "Contact surface mass",
@@ -146,6 +163,12 @@ namespace DuctileContact
                 "Load stepping/Maximum phase-field increment",
                 Utilities::to_string(max_phase_field_increment),
                 "it must be positive (1: no limit)");
+    check_input(local_error_tolerance == 0. ||
+                  time_integration != TimeIntegration::quasi_static,
+                "Load stepping/Local error tolerance",
+                Utilities::to_string(local_error_tolerance),
+                "it needs Time integration = Bossak, and this run is "
+                "quasi-static (0: no local error control)");
     check_input(minimum_time_step > 0. && minimum_time_step <= time_step,
                 "Load stepping/Minimum time step",
                 Utilities::to_string(minimum_time_step),

@@ -148,6 +148,16 @@ namespace DuctileContact
       const dealii::TrilinosWrappers::MPI::BlockVector &u_old,
       const double                                      dt,
       StepReport                                       &report) const;
+    /// In a dynamic run: the local error estimate of the converged step
+    /// from @p u_old to @p u (increment @p dt) into #local_error; marks the
+    /// step as failed in @p report when it exceeds Load stepping/Local
+    /// error tolerance. Returns the factor the next increment may be of
+    /// this one (infinite without a tolerance).
+    double
+    limit_local_error(const dealii::TrilinosWrappers::MPI::BlockVector &u,
+                      const dealii::TrilinosWrappers::MPI::BlockVector &u_old,
+                      const double                                      dt,
+                      StepReport                                       &report);
     void
     write_output(const unsigned int step, const double t);
     /// Commits the accepted state #u of @p step_data (the step started
@@ -224,6 +234,8 @@ namespace DuctileContact
     StepController controller;
     double         t    = 0.;
     unsigned int   step = 0;
+    /// The local error estimate of the last step (dynamic runs).
+    double local_error = 0.;
     /// The last accepted increment and its step size (linear predictor).
     dealii::TrilinosWrappers::MPI::BlockVector last_increment;
     double                                     last_dt = 0.;

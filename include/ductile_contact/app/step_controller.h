@@ -12,7 +12,8 @@ namespace DuctileContact
    * (cut-back); the increment grows by `Growth factor` after an easy step
    * (at most `Easy step Newton iterations`) or after `Growth after accepted
    * steps` accepted steps in a row at one increment, never beyond `Time
-   * step`.
+   * step`. A dynamic run's local error estimate may cut an increment back
+   * by more and bound its growth (reject(), accept()).
    */
   class StepController
   {
@@ -23,11 +24,12 @@ namespace DuctileContact
     double
     next_increment(const double t) const;
 
-    /// After the failed attempt @p dt_try from time @p t: halves it; false
-    /// when the next increment would be below `Minimum time step` or the
-    /// run stalls (stalled()).
+    /// After the failed attempt @p dt_try from time @p t: the next try is
+    /// @p factor times it (a half unless an error estimate asks for less);
+    /// false when it would be below `Minimum time step` or the run stalls
+    /// (stalled()).
     bool
-    reject(const double t, const double dt_try);
+    reject(const double t, const double dt_try, const double factor = 0.5);
 
     /// Whether `Maximum failures without progress` failed steps happened
     /// while t advanced by less than 1e-3 Time step.
@@ -45,9 +47,13 @@ namespace DuctileContact
       return stall_start;
     }
 
-    /// After the accepted step @p dt_try that took @p newton_iterations.
+    /// After the accepted step @p dt_try that took @p newton_iterations;
+    /// the next increment is at most @p largest_factor times @p dt_try (an
+    /// error estimate's bound).
     void
-    accept(const double dt_try, const unsigned int newton_iterations);
+    accept(const double       dt_try,
+           const unsigned int newton_iterations,
+           const double       largest_factor);
 
     /// Cut-backs of the step being solved.
     unsigned int

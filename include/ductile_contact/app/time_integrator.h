@@ -3,6 +3,7 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <ductile_contact/assembly/assembly_data.h>
+#include <ductile_contact/discretisation/boundary_condition.h>
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/materials/body_parameters.h>
 #include <ductile_contact/solver/solver_parameters.h>
@@ -36,15 +37,22 @@ namespace DuctileContact
    *
    * Holds the state v_n, a_n, a_m,n of the displacement block (the other
    * blocks stay zero), for checkpoints and mesh transfer by vectors().
+   *
+   * local_error() is the estimate of Zienkiewicz & Xie (1991) of a step's
+   * local displacement error, e = (beta - 1/6) dt^2 (a_n+1 - a_n), that
+   * the step control of Load stepping/Local error tolerance reads.
    */
   class TimeIntegrator
   {
   public:
     /// @p massless_boundaries: the boundary ids whose nodes carry no mass
     /// (the contact surfaces with Contact surface mass = redistributed).
+    /// @p boundary_conditions: their prescribed DoFs are left out of
+    /// local_error().
     TimeIntegrator(
       const LoadSteppingParameters                  &parameters,
       const std::deque<BodyParameters>              &bodies,
+      const std::deque<BoundaryCondition>           &boundary_conditions,
       const Discretisation                          &discretisation,
       const std::vector<dealii::types::boundary_id> &massless_boundaries);
 
@@ -73,6 +81,15 @@ namespace DuctileContact
     commit_terms(const dealii::TrilinosWrappers::MPI::BlockVector &u,
                  const dealii::TrilinosWrappers::MPI::BlockVector &u_n,
                  const double                                      dt);
+
+    /// The relative local error of the converged step from @p u_n to @p u
+    /// (size @p dt): the largest |e| over the DoFs with mass that no
+    /// boundary condition prescribes, over the largest |u - u_n| there (0
+    /// when nothing moves). The same on every rank.
+    double
+    local_error(const dealii::TrilinosWrappers::MPI::BlockVector &u,
+                const dealii::TrilinosWrappers::MPI::BlockVector &u_n,
+                const double                                      dt) const;
 
     /// Makes the state of commit_terms() the accepted one.
     void
@@ -111,10 +128,14 @@ namespace DuctileContact
     reset_terms();
 
     const std::deque<BodyParameters>             &bodies;
+    const std::deque<BoundaryCondition>          &boundary_conditions;
     const Discretisation                         &discretisation;
     const std::vector<dealii::types::boundary_id> massless_boundaries;
     /// The u DoFs on those boundaries (sorted, locally relevant).
     std::vector<dealii::types::global_dof_index> massless;
+    /// The owned u DoFs whose error local_error() measures: with mass, not
+    /// prescribed.
+    dealii::IndexSet measured;
 
     dealii::TrilinosWrappers::MPI::BlockVector velocity, acceleration,
       inertial_acceleration;

@@ -90,6 +90,9 @@ namespace DuctileContact
     TimeIntegration time_integration = TimeIntegration::quasi_static;
     /// rho_inf of the Bossak scheme, in [0, 1] (1: the trapezoidal rule).
     double spectral_radius = 1.;
+    /// Largest relative local error estimate of a dynamic step (0: no
+    /// control; see declare()).
+    double local_error_tolerance = 0.;
     /// Whether the contact surfaces carry mass (see declare()).
     ContactSurfaceMass contact_surface_mass = ContactSurfaceMass::redistributed;
 
