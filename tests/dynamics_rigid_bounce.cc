@@ -28,7 +28,7 @@
 //    end's velocity turns from -v_0 to +v_0) and the release (2.5 ms), and
 //    each is below a quarter of the largest step;
 //  - the bar still leaves at +v_0 (2 %), and the energy error is below
-//    that of the fixed 10 us steps (fewer steps than those: stdout).
+//    that of the fixed 10 us steps (the step counts: stdout).
 // One MPI rank (the contact terms on 1, 2 and 3 ranks: dynamics_bar_impact
 // and checkpoint/dynamic_resume).
 #include "tests.h"
