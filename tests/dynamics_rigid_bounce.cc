@@ -31,7 +31,7 @@
 //    that of the fixed 10 us steps (the step counts: stdout).
 // One MPI rank (the contact terms on 1, 2 and 3 ranks: dynamics_bar_impact
 // and checkpoint/dynamic_resume).
-#include "tests.h"
+#include "contact_events.h"
 
 using namespace dealii;
 
@@ -82,58 +82,30 @@ main(int argc, char **argv)
       const double dt = k == 0 ? 2e-5 : 1e-5;
       const auto   stats =
         Testing::run_scene(bounce_prm(dt), "bounce_" + std::to_string(k));
-      const auto       &t        = stats.at("time");
-      const auto       &active   = stats.at("contact1_active_nodes");
-      const std::size_t last     = t.size() - 1;
-      unsigned int      closings = 0, openings = 0;
-      double            first = 0., opened = 0., sum = 0., foundation = 0.;
-      unsigned int      n = 0;
-      for (std::size_t s = 1; s <= last; ++s)
-        {
-          if (active[s] > 0 && active[s - 1] == 0)
-            {
-              ++closings;
-              first = t[s - 1];
-            }
-          if (active[s] == 0 && active[s - 1] > 0)
-            {
-              ++openings;
-              opened = t[s - 1];
-            }
-          foundation = std::max(foundation, std::abs(stats.at("u1_z")[s]));
-        }
-      std::size_t release = 0;
-      for (std::size_t s = 0; s <= last; ++s)
-        {
-          if (t[s] > first + 0.25e-3 && t[s] < opened - 0.25e-3)
-            {
-              sum += std::abs(stats.at("contact1_force_z")[s]);
-              ++n;
-            }
-          if (t[s] <= opened)
-            release = s;
-        }
+      const auto e          = Testing::contact_events(stats, 0.25e-3);
+      double     foundation = 0.;
+      for (const double u : stats.at("u1_z"))
+        foundation = std::max(foundation, std::abs(u));
       const double velocity =
-        (stats.at("u2_z")[last] - stats.at("u2_z")[release]) /
-        (t[last] - t[release]);
+        Testing::mean_rate_after(stats, "u2_z", e.release);
       const double kinetic =
-        stats.at("kinetic_energy")[last] / stats.at("kinetic_energy")[0];
-      error[k] = -stats.at("energy_residual")[last];
-      std::cout << "dt " << dt << ": contact from " << first << " to " << opened
-                << ", " << closings << " closing(s), " << openings
-                << " opening(s), energy error " << error[k] << " of K_0 "
-                << stats.at("kinetic_energy")[0] << ", foundation moved "
-                << foundation << std::endl;
+        stats.at("kinetic_energy").back() / stats.at("kinetic_energy")[0];
+      error[k] = -stats.at("energy_residual").back();
+      std::cout << "dt " << dt << ": contact from " << e.closed << " to "
+                << e.opened << ", " << e.closings << " closing(s), "
+                << e.openings << " opening(s), energy error " << error[k]
+                << " of K_0 " << stats.at("kinetic_energy")[0]
+                << ", foundation moved " << foundation << std::endl;
       out << "dt " << dt << ": contact duration / (2L/c) "
-          << (opened - first) / duration << ", mean force / (rho c v0 A) "
-          << sum / n / force << ", velocity after / v_0 " << velocity / v0
+          << (e.opened - e.closed) / duration << ", mean force / (rho c v0 A) "
+          << e.mean_force / force << ", velocity after / v_0 " << velocity / v0
           << ", K at the end / K_0 " << kinetic << std::endl;
       out << "  closes once, opens once, after 2L/c within 3 %, force within "
              "2 %, leaves at +v_0 (2 %), K >= 0.98 K_0, foundation at rest: "
-          << Testing::yes_no(closings == 1 && openings == 1 &&
-                             std::abs((opened - first) / duration - 1.) <
+          << Testing::yes_no(e.closings == 1 && e.openings == 1 &&
+                             std::abs((e.opened - e.closed) / duration - 1.) <
                                0.03 &&
-                             std::abs(sum / n / force - 1.) < 0.02 &&
+                             std::abs(e.mean_force / force - 1.) < 0.02 &&
                              std::abs(velocity - v0) < 0.02 * v0 &&
                              kinetic >= 0.98 && foundation < 1e-12)
           << std::endl;
@@ -168,13 +140,10 @@ main(int argc, char **argv)
     at_events = at_events && smallest[ms] > 0 &&
                 std::abs(t[smallest[ms]] - (ms + 0.5) * 1e-3) < 5e-5 &&
                 dt[smallest[ms]] < 0.25 * largest_dt;
-  std::size_t opened = 0;
-  for (std::size_t s = 1; s <= last; ++s)
-    if (stats.at("contact1_active_nodes")[s] == 0 &&
-        stats.at("contact1_active_nodes")[s - 1] > 0)
-      opened = s - 1;
   const double velocity =
-    (stats.at("u2_z")[last] - stats.at("u2_z")[opened]) / (t[last] - t[opened]);
+    Testing::mean_rate_after(stats,
+                             "u2_z",
+                             Testing::contact_events(stats, 0.25e-3).release);
   const double adaptive_error = -stats.at("energy_residual")[last];
   double       cutbacks       = 0.;
   for (const double c : stats.at("cutbacks"))
