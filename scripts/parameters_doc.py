@@ -143,8 +143,13 @@ def generate(exe):
              "are given in brackets; [-] is dimensionless, t the load-step "
              "time."]
     problems = []
+    # Entries outside every subsection (Dimension) come first.
+    top = {k: v for k, v in tree.items() if is_entry(v)}
+    if top:
+        render(top, ["Outside the subsections"], lines, problems)
     for name, sub in tree.items():
-        render(sub, [name], lines, problems)
+        if not is_entry(sub):
+            render(sub, [name], lines, problems)
     return "\n".join(lines) + "\n", problems
 
 

@@ -23,7 +23,10 @@ and the slit faces (traction free).
 
 THICKNESS (default H) sets the slab's thickness (one element layer). For
 adaptive refinement note that every refinement halves a cell in all three
-directions: a cell refined L times is 2^L layers thick.
+directions: a cell refined L times is 2^L layers thick. THICKNESS = 0
+writes the plane-strain mesh instead (`set Dimension = 2`): the same
+quadrilaterals in the x-y plane, physical surface 1 (the specimen) and
+physical curves 1 bottom, 2 top, 4 free edges and slit.
 
 Usage: make_sent.py H BAND OUTPUT.msh [XEND [HEIGHT [THICKNESS]]]
        (e.g. make_sent.py 0.0075 0.05 sent.msh)
@@ -102,37 +105,55 @@ def node(i, j, k, upper):
     return node_id[key]
 
 
+two_d = thickness == 0.0
 elements = []
 for j in range(ny - 1):
     upper = j >= j_slit
     for i in range(nx - 1):
         v = [node(i, j, 0, upper), node(i + 1, j, 0, upper),
              node(i + 1, j + 1, 0, upper), node(i, j + 1, 0, upper)]
-        v += [node(i, j, 1, upper), node(i + 1, j, 1, upper),
-              node(i + 1, j + 1, 1, upper), node(i, j + 1, 1, upper)]
-        elements.append((5, 1, v))
-        # slab faces
-        elements.append((3, 3, v[:4]))
-        elements.append((3, 3, v[4:]))
+        if two_d:
+            # the quadrilateral and its boundary lines (type 1), each edge
+            # as (first, second) of v: bottom 0-1, right 1-2, top 3-2, left 0-3
+            elements.append((3, 1, v))
+            edges = {"bottom": [v[0], v[1]], "top": [v[3], v[2]],
+                     "left": [v[0], v[3]], "right": [v[1], v[2]]}
+            etype = 1
+        else:
+            v += [node(i, j, 1, upper), node(i + 1, j, 1, upper),
+                  node(i + 1, j + 1, 1, upper), node(i, j + 1, 1, upper)]
+            elements.append((5, 1, v))
+            # slab faces
+            elements.append((3, 3, v[:4]))
+            elements.append((3, 3, v[4:]))
+            edges = {"bottom": [v[0], v[1], v[5], v[4]],
+                     "top": [v[3], v[2], v[6], v[7]],
+                     "left": [v[0], v[3], v[7], v[4]],
+                     "right": [v[1], v[2], v[6], v[5]]}
+            etype = 3
         if j == 0:
-            elements.append((3, 1, [v[0], v[1], v[5], v[4]]))
+            elements.append((etype, 1, edges["bottom"]))
         if j == ny - 2:
-            elements.append((3, 2, [v[3], v[2], v[6], v[7]]))
+            elements.append((etype, 2, edges["top"]))
         if i == 0:
-            elements.append((3, 4, [v[0], v[3], v[7], v[4]]))
+            elements.append((etype, 4, edges["left"]))
         if i == nx - 2:
-            elements.append((3, 4, [v[1], v[2], v[6], v[5]]))
+            elements.append((etype, 4, edges["right"]))
         # slit faces: the bottom of the upper row and the top of the lower row
         if xs[i + 1] <= 0.5 + 1e-12:
             if j == j_slit:
-                elements.append((3, 4, [v[0], v[1], v[5], v[4]]))
+                elements.append((etype, 4, edges["bottom"]))
             if j == j_slit - 1:
-                elements.append((3, 4, [v[3], v[2], v[6], v[7]]))
+                elements.append((etype, 4, edges["top"]))
 
-write_gmsh(out,
-           [(2, 1, "bottom"), (2, 2, "top"), (2, 3, "slab faces"),
-            (2, 4, "free edges and slit"), (3, 1, "specimen")],
-           nodes, elements, digits=15)
-print(f"{out}: {len([e for e in elements if e[0] == 5])} hexahedra, "
+if two_d:
+    names = [(1, 1, "bottom"), (1, 2, "top"), (1, 4, "free edges and slit"),
+             (2, 1, "specimen")]
+else:
+    names = [(2, 1, "bottom"), (2, 2, "top"), (2, 3, "slab faces"),
+             (2, 4, "free edges and slit"), (3, 1, "specimen")]
+write_gmsh(out, names, nodes, elements, digits=15)
+cells = len([e for e in elements if e[0] == (3 if two_d else 5)])
+print(f"{out}: {cells} {'quadrilaterals' if two_d else 'hexahedra'}, "
       f"{len(nodes)} nodes, h = {h} mm for {0.5 - band} <= x <= {x_end}, "
       f"|y - {y_mid}| <= {band}")

@@ -75,6 +75,16 @@ namespace DuctileContact
     boundary_ids         = boundary_id_list;
     contact_pair_numbers = pair_list;
 
+    prm.add_parameter(
+      "Dimension",
+      dimension,
+      "Space dimension of the scene: 3, or 2 for plane strain (the mesh in "
+      "the x-y plane, u_z = 0; the material point stays three-dimensional, "
+      "with tau_33 and the out-of-plane plastic stretch; forces, energies "
+      "and works per unit thickness). Read before every "
+      "other entry: ductile-contact runs a 2-D input in its plane-strain "
+      "build, ductile-contact-2d.",
+      Patterns::Integer(2, 3));
     mesh.declare(prm);
 
     prm.enter_subsection("Finite elements");
@@ -206,6 +216,31 @@ namespace DuctileContact
 
 
 
+  std::optional<unsigned int>
+  input_dimension(const std::string              &file_name,
+                  const std::vector<std::string> &overrides)
+  {
+    try
+      {
+        std::ifstream in(file_name);
+        if (!in)
+          return std::nullopt;
+        std::stringstream text;
+        text << in.rdbuf() << "\n" << overrides_as_prm(overrides);
+        unsigned int     dimension = dim;
+        ParameterHandler prm;
+        prm.add_parameter("Dimension", dimension, "", Patterns::Integer(2, 3));
+        prm.parse_input_from_string(text.str(), "", true);
+        return dimension;
+      }
+    catch (...)
+      {
+        return std::nullopt;
+      }
+  }
+
+
+
   void
   RunParameters::parse(const std::string              &file_name,
                        const std::vector<std::string> &overrides)
@@ -242,6 +277,18 @@ namespace DuctileContact
   void
   RunParameters::check()
   {
+    check_input(dimension == dim,
+                "Dimension",
+                std::to_string(dimension),
+                "this program is the " + std::to_string(dim) +
+                  "-D build; run 'ductile-contact', which hands the input "
+                  "to the build of its dimension");
+    if (dim == 2 && !contact_pair_numbers.empty())
+      throw InputError("Contact/Pairs",
+                       std::to_string(contact_pair_numbers.front()) +
+                         (contact_pair_numbers.size() > 1 ? ", ..." : ""),
+                       "mortar contact is three-dimensional (quad9 faces); "
+                       "with Dimension = 2 a scene has no contact pairs");
     mesh.check();
     for (const BodyParameters &b : bodies)
       b.check();

@@ -2,6 +2,7 @@
 #include <deal.II/dofs/dof_tools.h>
 
 #include <ductile_contact/app/time_integrator.h>
+#include <ductile_contact/core/expression.h>
 
 #include <algorithm>
 #include <map>
@@ -107,7 +108,7 @@ namespace DuctileContact
     for (const BodyParameters &b : bodies)
       {
         auto f = std::make_unique<FunctionParser<dim>>(dim);
-        f->initialize("x,y,z", b.initial_velocity, {});
+        f->initialize(coordinate_variables(), b.initial_velocity, {});
         initial.emplace(b.material_id, std::move(f));
       }
     velocity              = 0.;

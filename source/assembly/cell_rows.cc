@@ -87,7 +87,7 @@ namespace DuctileContact
       {
         const Tensor<1, dim> &grad = shapes.u_grad[k];
         const unsigned        a    = dofs.u_component[k];
-        const double          term = (m.P[a] * grad) * JxW;
+        const double          term = in_plane(m.P[a], grad) * JxW;
         rows.f_int(dofs.u[k]) += term;
         // F = I + Grad u holds Grad u to eps in absolute terms, so P
         // carries errors of eps times the moduli.
@@ -149,8 +149,8 @@ namespace DuctileContact
     for (unsigned int l = 0; l < n_u; ++l)
       {
         const unsigned int c = dofs.u_component[l];
-        alpha_u_right[l]     = m.dr_dF[c] * shapes.u_grad[l];
-        u_alpha_left[l]      = (m.dP_dalpha[c] * shapes.u_grad[l]) * JxW;
+        alpha_u_right[l]     = in_plane(m.dr_dF[c], shapes.u_grad[l]);
+        u_alpha_left[l]      = in_plane(m.dP_dalpha[c], shapes.u_grad[l]) * JxW;
       }
     std::copy(a_value.begin(), a_value.end(), blocks.u_alpha.right(q, 0));
     for (unsigned int k = 0; k < n_a; ++k)
@@ -213,7 +213,8 @@ namespace DuctileContact
     // u-s: dP/ds : Grad N_k N_l.
     double *us_left = blocks.u_s.left(q, 0);
     for (unsigned int k = 0; k < n_u; ++k)
-      us_left[k] = (m.dP_ds[dofs.u_component[k]] * shapes.u_grad[k]) * JxW;
+      us_left[k] =
+        in_plane(m.dP_ds[dofs.u_component[k]], shapes.u_grad[k]) * JxW;
     std::copy(s_value.begin(), s_value.end(), blocks.u_s.right(q, 0));
     if (!driver.loading)
       return;
@@ -223,7 +224,7 @@ namespace DuctileContact
     for (unsigned int k = 0; k < n_s; ++k)
       su_left[k] = g1 * s_value[k] * JxW;
     for (unsigned int l = 0; l < n_u; ++l)
-      su_right[l] = psi.d_dF[dofs.u_component[l]] * shapes.u_grad[l];
+      su_right[l] = in_plane(psi.d_dF[dofs.u_component[l]], shapes.u_grad[l]);
     blocks.s_alpha.set_scaled(
       q, 0, g1 * psi.d_dalpha * JxW, s_value, shapes.alpha_value);
   }

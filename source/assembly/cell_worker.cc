@@ -103,16 +103,15 @@ namespace DuctileContact
 
     /// The plastic work of the step at one point (plastic_work_of_step()).
     double
-    plastic_work(const Tensor<2, dim>       &F,
-                 const Tensor<2, dim>       &grad_u_old,
-                 const MaterialResponse     &m,
-                 const PlasticHistory       &history_n,
-                 const double                s_n,
-                 const double                s,
-                 const PlasticityParameters &plastic)
+    plastic_work(const Tensor<2, material_dim> &F,
+                 const Tensor<2, dim>          &grad_u_old,
+                 const MaterialResponse        &m,
+                 const PlasticHistory          &history_n,
+                 const double                   s_n,
+                 const double                   s,
+                 const PlasticityParameters    &plastic)
     {
-      return plastic_work_of_step(Physics::Elasticity::StandardTensors<dim>::I +
-                                    grad_u_old,
+      return plastic_work_of_step(deformation_gradient(grad_u_old),
                                   F,
                                   history_n,
                                   m.updated.Cp_inv,
@@ -169,14 +168,14 @@ namespace DuctileContact
 
 
   MaterialResponse
-  SystemAssembler::point_response(const BodyParameters &body,
-                                  const Tensor<2, dim> &F,
-                                  const unsigned int    q,
-                                  const unsigned int    cell_index,
-                                  const BodyFields     &fields,
-                                  const CellScratch    &scratch,
-                                  const Pass           &pass,
-                                  AssemblyReduction    &sums) const
+  SystemAssembler::point_response(const BodyParameters          &body,
+                                  const Tensor<2, material_dim> &F,
+                                  const unsigned int             q,
+                                  const unsigned int             cell_index,
+                                  const BodyFields              &fields,
+                                  const CellScratch             &scratch,
+                                  const Pass                    &pass,
+                                  AssemblyReduction             &sums) const
   {
     const AssemblyTargets *targets = pass.targets;
     const Branches      mode = targets ? targets->branches : Branches::evaluate;
@@ -203,18 +202,18 @@ namespace DuctileContact
 
 
   void
-  SystemAssembler::hardening_point(const MaterialResponse     &m,
-                                   const BodyParameters       &body,
-                                   const PlasticityParameters &plastic,
-                                   const Tensor<2, dim>       &F,
-                                   const unsigned int          q,
-                                   const bool                  committing,
-                                   const CellScratch          &scratch,
-                                   const LocalDofs            &dofs,
-                                   const double                JxW,
-                                   const bool                  tangent,
-                                   LocalRows                  &rows,
-                                   AssemblyReduction          &sums) const
+  SystemAssembler::hardening_point(const MaterialResponse        &m,
+                                   const BodyParameters          &body,
+                                   const PlasticityParameters    &plastic,
+                                   const Tensor<2, material_dim> &F,
+                                   const unsigned int             q,
+                                   const bool                     committing,
+                                   const CellScratch             &scratch,
+                                   const LocalDofs               &dofs,
+                                   const double                   JxW,
+                                   const bool                     tangent,
+                                   LocalRows                     &rows,
+                                   AssemblyReduction             &sums) const
   {
     const PointHistory &history = *scratch.history_n[q];
     const double        l_p     = body.plastic_length_scale;
@@ -361,11 +360,11 @@ namespace DuctileContact
       rows.blocks.reinit(dofs, n_q);
 
     double volume = 0, vm = 0, mean = 0, mean_J = 0, driver_sum = 0;
-    SymmetricTensor<2, dim> tau_sum, sigma_sum, b_sum, Cp_sum;
+    SymmetricTensor<2, material_dim> tau_sum, sigma_sum, b_sum, Cp_sum;
     for (unsigned int q = 0; q < n_q; ++q)
       {
-        const Tensor<2, dim> F =
-          Physics::Elasticity::StandardTensors<dim>::I + scratch.grad_u[q];
+        const Tensor<2, material_dim> F =
+          deformation_gradient(scratch.grad_u[q]);
         const double J = determinant(F);
         if (!(J >= sums.min_J))
           sums.note_J(J, {cell->center(), cell->material_id()});

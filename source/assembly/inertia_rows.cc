@@ -97,7 +97,11 @@ namespace DuctileContact
       return midpoint[d] ? Quadrature<1>(QMidpoint<1>())
                          : Quadrature<1>(QGauss<1>(n_gauss));
     };
+#if DUCTILE_CONTACT_DIM == 2
+    return Quadrature<dim>(rule(0), rule(1));
+#else
     return Quadrature<dim>(Quadrature<2>(rule(0), rule(1)), rule(2));
+#endif
   }
 
 

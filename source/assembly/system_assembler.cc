@@ -92,7 +92,7 @@ namespace DuctileContact
                     &quantities.b,
                     &quantities.Cp})
       v->assign(discretisation.triangulation.n_active_cells(),
-                SymmetricTensor<2, dim>());
+                SymmetricTensor<2, material_dim>());
   }
 
 

@@ -23,23 +23,34 @@ namespace DuctileContact
     Vec<Number>
     minus(const Vec<Number> &a, const Vec<Number> &b)
     {
-      return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}};
+      Vec<Number> d;
+      for (unsigned int c = 0; c < dim; ++c)
+        d[c] = a[c] - b[c];
+      return d;
     }
 
     template <typename Number>
     Number
     dot(const Vec<Number> &a, const Vec<Number> &b)
     {
-      return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+      Number d = a[0] * b[0];
+      for (unsigned int c = 1; c < dim; ++c)
+        d += a[c] * b[c];
+      return d;
     }
 
+    /// a x b. Quad9 faces lie in 3-D space; the plane-strain build has no
+    /// contact (RunParameters::check()), and there this is zero.
     template <typename Number>
     Vec<Number>
     cross(const Vec<Number> &a, const Vec<Number> &b)
     {
-      return {{a[1] * b[2] - a[2] * b[1],
-               a[2] * b[0] - a[0] * b[2],
-               a[0] * b[1] - a[1] * b[0]}};
+      Vec<Number> n{};
+      if constexpr (dim == 3)
+        n = {{a[1] * b[2] - a[2] * b[1],
+              a[2] * b[0] - a[0] * b[2],
+              a[0] * b[1] - a[1] * b[0]}};
+      return n;
     }
 
     template <typename Number>
@@ -217,59 +228,66 @@ namespace DuctileContact
             const Point<2>                &start,
             Vec2<Number>                  &xi)
     {
-      Point<dim>     q0;
-      Tensor<1, dim> d0;
-      for (unsigned int c = 0; c < dim; ++c)
-        {
-          q0[c] = value_of(q[c]);
-          d0[c] = value_of(d[c]);
-        }
-      Point<2> xi0;
-      if (!face.project_along(q0, d0, start, xi0))
+      // Quad9 faces lie in 3-D space; the plane-strain build has no contact
+      // (RunParameters::check()) and never gets here.
+      if constexpr (dim != 3)
         return false;
-      const double   t  = (face.position(xi0) - q0) * d0 / d0.norm_square();
-      const auto     tg = face.tangents(xi0);
-      Tensor<2, dim> jac;
-      for (unsigned int c = 0; c < dim; ++c)
+      else
         {
-          jac[c][0] = tg[0][c];
-          jac[c][1] = tg[1][c];
-          jac[c][2] = -d0[c];
-        }
-      const Tensor<2, dim>  inverse = invert(jac);
-      std::array<double, 9> n;
-      Quad9::shape(xi0, n);
-      Vec<Number> r;
-      for (unsigned int c = 0; c < dim; ++c)
-        {
-          r[c] = -q[c] - t * d[c];
-          if constexpr (std::is_same_v<Number, ContactAD>)
-            {
-              // x[i][c] is the independent variable first + 3 i + c
-              // (mortar_points()): its 9 terms touch one derivative each.
-              for (unsigned int i = 0; i < 9; ++i)
-                {
-                  Assert(x[i][c].fastAccessDx(first + 3 * i + c) == 1.,
-                         ExcInternalError());
-                  r[c].val() += n[i] * x[i][c].val();
-                  r[c].fastAccessDx(first + 3 * i + c) += n[i];
-                }
-            }
-          else
-            for (unsigned int i = 0; i < 9; ++i)
-              r[c] += n[i] * x[i][c];
-        }
-      for (unsigned int k = 0; k < 2; ++k)
-        {
-          xi[k] = xi0[k];
+          Point<dim>     q0;
+          Tensor<1, dim> d0;
           for (unsigned int c = 0; c < dim; ++c)
-            xi[k] -= inverse[k][c] * r[c];
-          if (value_of(xi[k]) < 0.)
-            xi[k] = 0.;
-          else if (value_of(xi[k]) > 1.)
-            xi[k] = 1.;
+            {
+              q0[c] = value_of(q[c]);
+              d0[c] = value_of(d[c]);
+            }
+          Point<2> xi0;
+          if (!face.project_along(q0, d0, start, xi0))
+            return false;
+          const double   t  = (face.position(xi0) - q0) * d0 / d0.norm_square();
+          const auto     tg = face.tangents(xi0);
+          Tensor<2, dim> jac;
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              jac[c][0] = tg[0][c];
+              jac[c][1] = tg[1][c];
+              jac[c][2] = -d0[c];
+            }
+          const Tensor<2, dim>  inverse = invert(jac);
+          std::array<double, 9> n;
+          Quad9::shape(xi0, n);
+          Vec<Number> r;
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              r[c] = -q[c] - t * d[c];
+              if constexpr (std::is_same_v<Number, ContactAD>)
+                {
+                  // x[i][c] is the independent variable first + 3 i + c
+                  // (mortar_points()): its 9 terms touch one derivative each.
+                  for (unsigned int i = 0; i < 9; ++i)
+                    {
+                      Assert(x[i][c].fastAccessDx(first + 3 * i + c) == 1.,
+                             ExcInternalError());
+                      r[c].val() += n[i] * x[i][c].val();
+                      r[c].fastAccessDx(first + 3 * i + c) += n[i];
+                    }
+                }
+              else
+                for (unsigned int i = 0; i < 9; ++i)
+                  r[c] += n[i] * x[i][c];
+            }
+          for (unsigned int k = 0; k < 2; ++k)
+            {
+              xi[k] = xi0[k];
+              for (unsigned int c = 0; c < dim; ++c)
+                xi[k] -= inverse[k][c] * r[c];
+              if (value_of(xi[k]) < 0.)
+                xi[k] = 0.;
+              else if (value_of(xi[k]) > 1.)
+                xi[k] = 1.;
+            }
+          return true;
         }
-      return true;
     }
   } // namespace
 
@@ -322,7 +340,7 @@ namespace DuctileContact
             continue;
           const auto s_nodes = sub_quad(sq % 2, sq / 2);
           o.slave_quad       = sq;
-          o.centre           = Vec<Number>{{0., 0., 0.}};
+          o.centre           = Vec<Number>{};
           for (const unsigned int i : s_nodes)
             for (unsigned int c = 0; c < dim; ++c)
               o.centre[c] += 0.25 * slave[i][c];

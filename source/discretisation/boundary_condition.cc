@@ -5,6 +5,7 @@
 #include <ductile_contact/core/input_error.h>
 #include <ductile_contact/discretisation/boundary_condition.h>
 
+#include <algorithm>
 #include <map>
 
 namespace DuctileContact
@@ -27,7 +28,8 @@ namespace DuctileContact
       "Constrained components",
       constrained_components_text,
       "Displacement components prescribed on this boundary (Dirichlet), a "
-      "comma-separated subset of x, y, z; empty: none. The other components "
+      "comma-separated subset of x, y, z (x, y in 2-D); empty: none. The "
+      "other components "
       "carry the traction below.",
       Patterns::Anything());
     prm.add_parameter(
@@ -35,14 +37,16 @@ namespace DuctileContact
       displacement_text,
       "Prescribed displacement ubar(x, y, z, t) [m], three expressions "
       "separated by ';' (x, y, z are reference coordinates, t the load-step "
-      "time); only the constrained components are used.",
+      "time; in 2-D two expressions of x, y, t); only the constrained "
+      "components are used.",
       Patterns::Anything());
     prm.add_parameter(
       "Traction",
       traction_text,
       "Dead-load nominal traction T(x, y, z, t) [Pa] (force per reference "
-      "area), three expressions separated by ';'; applied to the "
-      "components that are not constrained.",
+      "area; in 2-D per unit thickness), three expressions separated by "
+      "';' (two in 2-D); applied to the components that are not "
+      "constrained.",
       Patterns::Anything());
     prm.add_parameter("Function constants",
                       constants_text,
@@ -95,26 +99,27 @@ namespace DuctileContact
       check_input(parts.size() == dim,
                   entry,
                   expressions,
-                  "it needs three expressions separated by ';'");
-      static const char *const which[] = {"first", "second", "third"};
+                  "it needs " + vector_size_word() +
+                    " expressions separated by ';'");
+      static const char *const which[]   = {"first", "second", "third"};
+      const std::string        variables = coordinate_variables() + ",t";
       for (unsigned int d = 0; d < dim; ++d)
         {
           const std::string message =
-            expression_error(parts[d], "x,y,z,t", constants);
+            expression_error(parts[d], variables, constants);
           check_input(message.empty(),
                       entry,
                       expressions,
                       "its " + std::string(which[d]) + " expression, '" +
-                        parts[d] +
-                        "', is not an expression of x, y, z, t and the "
-                        "Constants: " +
-                        message);
+                        parts[d] + "', is not an expression of " +
+                        coordinate_list() +
+                        ", t and the Constants: " + message);
         }
       std::string padded = expressions;
       for (unsigned int i = 0; i < n_padding; ++i)
         padded += "; 0";
       auto function = std::make_unique<FunctionParser<dim>>(dim + n_padding);
-      function->initialize("x,y,z,t", padded, constants, true);
+      function->initialize(variables, padded, constants, true);
       return function;
     }
   } // namespace
@@ -126,14 +131,15 @@ namespace DuctileContact
   {
     const std::string prefix = subsection() + "/";
 
-    constrained = {{false, false, false}};
+    constrained = {};
     for (const std::string &c :
          Utilities::split_string_list(constrained_components_text, ','))
       {
-        check_input(c == "x" || c == "y" || c == "z",
+        check_input(c.size() == 1 && c[0] >= 'x' && c[0] < 'x' + char(dim),
                     prefix + "Constrained components",
                     constrained_components_text,
-                    "it must be a comma-separated subset of x, y, z");
+                    "it must be a comma-separated subset of " +
+                      coordinate_list());
         constrained[c[0] - 'x'] = true;
       }
 
@@ -150,7 +156,11 @@ namespace DuctileContact
     for (const char ch : traction_text)
       if (ch != ' ')
         stripped += ch;
-    has_traction = (stripped != "0;0;0");
+    std::string zero;
+    for (const char ch : zero_vector_expression())
+      if (ch != ' ')
+        zero += ch;
+    has_traction = (stripped != zero);
   }
 
 
@@ -158,7 +168,8 @@ namespace DuctileContact
   bool
   BoundaryCondition::has_dirichlet() const
   {
-    return constrained[0] || constrained[1] || constrained[2];
+    return std::find(constrained.begin(), constrained.end(), true) !=
+           constrained.end();
   }
 
 

@@ -103,11 +103,10 @@ namespace DuctileContact
         cell->set_active_fe_index(fe_index(bodies.at(cell->material_id())));
     dof_handler.distribute_dofs(fe_collection);
 
-    const std::vector<unsigned int> block_component{Block::displacement,
-                                                    Block::displacement,
-                                                    Block::displacement,
-                                                    Block::hardening,
-                                                    Block::phase_field};
+    std::vector<unsigned int> block_component(Component::n_components,
+                                              Block::displacement);
+    block_component[Component::hardening]   = Block::hardening;
+    block_component[Component::phase_field] = Block::phase_field;
     DoFRenumbering::component_wise(dof_handler, block_component);
     dofs_per_block =
       DoFTools::count_dofs_per_fe_block(dof_handler, block_component);

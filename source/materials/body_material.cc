@@ -7,14 +7,14 @@ namespace DuctileContact
   using namespace dealii;
 
   MaterialResponse
-  evaluate_material(const BodyParameters      &body,
-                    const Tensor<2, dim>      &F,
-                    const PlasticHistory      &history_n,
-                    const double               alpha,
-                    const double               s,
-                    const double               dt,
-                    const bool                 with_tangent,
-                    const std::optional<bool> &frozen_yielding)
+  evaluate_material(const BodyParameters          &body,
+                    const Tensor<2, material_dim> &F,
+                    const PlasticHistory          &history_n,
+                    const double                   alpha,
+                    const double                   s,
+                    const double                   dt,
+                    const bool                     with_tangent,
+                    const std::optional<bool>     &frozen_yielding)
   {
     if (body.plasticity)
       return plastic_update(F,

@@ -65,7 +65,8 @@ namespace DuctileContact
       "Initial velocity",
       initial_velocity,
       "Velocity at t = 0 [m/s], three expressions of x, y, z (reference "
-      "coordinates) separated by ';'; read with Time integration = Bossak. "
+      "coordinates; two of x, y in 2-D) separated by ';'; read with Time "
+      "integration = Bossak. "
       "The bodies start stress-free, so the initial acceleration is 0.",
       Patterns::Anything());
     prm.add_parameter(
@@ -169,8 +170,10 @@ namespace DuctileContact
     prm.add_parameter("Interior penalty",
                       crack.interior_penalty,
                       "gamma_IP of the C0 interior-penalty face terms of the "
-                      "bi-Laplacian; 0 selects the default 1.5 p (p + 1) "
-                      "(see phase_field/c0ip.h for why not p (p + 1)) [-].",
+                      "bi-Laplacian; 0 selects the default (d/2) p (p + 1): "
+                      "1.5 p (p + 1) in 3-D, p (p + 1) in 2-D (see "
+                      "phase_field/c0ip.h for why not p (p + 1) in 3-D) "
+                      "[-].",
                       Patterns::Double(0.));
     prm.add_parameter(
       "Volumetric switch width",
@@ -256,14 +259,17 @@ namespace DuctileContact
     check_input(velocity.size() == dim,
                 prefix + "Initial velocity",
                 initial_velocity,
-                "it needs three expressions separated by ';'");
+                "it needs " + vector_size_word() +
+                  " expressions separated by ';'");
     for (const std::string &part : velocity)
       {
-        const std::string error = expression_error(part, "x,y,z");
+        const std::string error =
+          expression_error(part, coordinate_variables());
         check_input(error.empty(),
                     prefix + "Initial velocity",
                     initial_velocity,
-                    "'" + part + "' is not an expression of x, y, z: " + error);
+                    "'" + part + "' is not an expression of " +
+                      coordinate_list() + ": " + error);
       }
     if (plasticity)
       {
@@ -316,11 +322,12 @@ namespace DuctileContact
         const std::string error =
           crack.initial_crack.empty()
             ? ""
-            : expression_error(crack.initial_crack, "x,y,z");
+            : expression_error(crack.initial_crack, coordinate_variables());
         check_input(error.empty(),
                     f + "Initial crack",
                     crack.initial_crack,
-                    "it is not an expression of x, y, z: " + error);
+                    "it is not an expression of " + coordinate_list() + ": " +
+                      error);
         check_input(crack.driver != CrackDriverType::elastic_plastic_energy ||
                       crack.work_driver.factor == 1.,
                     f + "Driver factor",

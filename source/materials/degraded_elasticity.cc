@@ -6,12 +6,12 @@ namespace DuctileContact
   using namespace dealii;
 
   MaterialResponse
-  degraded_neo_hooke(const Tensor<2, dim>        &F,
-                     const double                 s,
-                     const double                 mu,
-                     const double                 kappa,
-                     const DegradationParameters &degradation,
-                     const bool                   with_tangent)
+  degraded_neo_hooke(const Tensor<2, material_dim> &F,
+                     const double                   s,
+                     const double                   mu,
+                     const double                   kappa,
+                     const DegradationParameters   &degradation,
+                     const bool                     with_tangent)
   {
     const double g  = degradation_value(s, degradation);
     const double dg = degradation_derivative(s, degradation);

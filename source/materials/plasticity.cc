@@ -46,10 +46,10 @@ namespace DuctileContact
     Number
     plastic_work_of(const Number &alpha, const PlasticityParameters &p)
     {
-      const double eta        = p.saturation_exponent;
-      const Number saturation = eta > 0. ?
-                                  Number(alpha - (1. - std::exp(-eta * alpha)) / eta) :
-                                  Number(0.);
+      const double eta = p.saturation_exponent;
+      const Number saturation =
+        eta > 0. ? Number(alpha - (1. - std::exp(-eta * alpha)) / eta)
+                 : Number(0.);
       return p.initial_yield * alpha +
              (p.saturation_yield - p.initial_yield) * saturation +
              0.5 * p.linear_hardening * alpha * alpha;
@@ -90,9 +90,7 @@ namespace DuctileContact
       const Number y = hardening_of(alpha, p);
       if (!p.degrade_plastic_energy)
         return y;
-      const Number slope =
-        degradable_part(plastic_work_of(alpha, p), p)
-          .second;
+      const Number slope = degradable_part(plastic_work_of(alpha, p), p).second;
       return y * (1. - (1. - degradation_of(s, p)) * slope);
     }
 
@@ -147,26 +145,27 @@ namespace DuctileContact
      * derivatives of AD numbers are those of the same polynomial.
      */
     template <typename Number>
-    Tensor<2, dim, Number>
-    exponential(const SymmetricTensor<2, dim, Number> &A)
+    Tensor<2, material_dim, Number>
+    exponential(const SymmetricTensor<2, material_dim, Number> &A)
     {
-      const auto value_norm = [](const Tensor<2, dim, Number> &T) {
+      const auto value_norm = [](const Tensor<2, material_dim, Number> &T) {
         double sum = 0.;
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int i = 0; i < material_dim; ++i)
+          for (unsigned int j = 0; j < material_dim; ++j)
             sum += value_of(T[i][j]) * value_of(T[i][j]);
         return std::sqrt(sum);
       };
-      Tensor<2, dim, Number> X(A);
-      unsigned int           squarings = 0;
+      Tensor<2, material_dim, Number> X(A);
+      unsigned int                    squarings = 0;
       // (A non-finite A keeps its norm: at most 64 halvings, the NaN or
       // Inf then reaches the residual, which reports it.)
       for (double norm = value_norm(X); norm > 0.5 && squarings < 64;
            norm *= 0.5)
         ++squarings;
       X *= std::ldexp(1., -static_cast<int>(squarings));
-      Tensor<2, dim, Number> result(unit_symmetric_tensor<dim, Number>());
-      Tensor<2, dim, Number> term = result;
+      Tensor<2, material_dim, Number> result(
+        unit_symmetric_tensor<material_dim, Number>());
+      Tensor<2, material_dim, Number> term = result;
       for (unsigned int k = 1; k <= 20; ++k)
         {
           term = term * X;
@@ -183,29 +182,29 @@ namespace DuctileContact
     template <typename Number>
     struct Evaluation
     {
-      Number                          J, psi_elastic, psi_plus, r;
-      SymmetricTensor<2, dim, Number> tau, Cp_inv;
-      Tensor<2, dim, Number>          P;
-      bool                            yielding, trial_yielding;
+      Number                                   J, psi_elastic, psi_plus, r;
+      SymmetricTensor<2, material_dim, Number> tau, Cp_inv;
+      Tensor<2, material_dim, Number>          P;
+      bool                                     yielding, trial_yielding;
     };
 
     template <typename Number>
-    SymmetricTensor<2, dim, Number>
-    push_forward(const Tensor<2, dim, Number>          &F,
-                 const SymmetricTensor<2, dim, Number> &C)
+    SymmetricTensor<2, material_dim, Number>
+    push_forward(const Tensor<2, material_dim, Number>          &F,
+                 const SymmetricTensor<2, material_dim, Number> &C)
     {
-      return symmetrize(F * Tensor<2, dim, Number>(C) * transpose(F));
+      return symmetrize(F * Tensor<2, material_dim, Number>(C) * transpose(F));
     }
 
     template <typename Number>
     Evaluation<Number>
-    evaluate(const Tensor<2, dim, Number> &F,
-             const PlasticHistory         &history_n,
-             const Number                 &alpha,
-             const Number                 &s,
-             const double                  dt,
-             const PlasticityParameters   &p,
-             const std::optional<bool>    &frozen_yielding)
+    evaluate(const Tensor<2, material_dim, Number> &F,
+             const PlasticHistory                  &history_n,
+             const Number                          &alpha,
+             const Number                          &s,
+             const double                           dt,
+             const PlasticityParameters            &p,
+             const std::optional<bool>             &frozen_yielding)
     {
       const double       mu = p.shear_modulus, kappa = p.bulk_modulus;
       Evaluation<Number> e;
@@ -215,65 +214,68 @@ namespace DuctileContact
       const auto [q, dq] = tension_part(e.J, p.volumetric_switch_width);
 
       // 1. Trial state and yield check (chi_p from values only).
-      const SymmetricTensor<2, dim, Number> Cp_inv_n(history_n.Cp_inv);
-      const SymmetricTensor<2, dim, Number> b_tr = push_forward(F, Cp_inv_n);
-      const Number                          mu_g = mu * g_dev;
-      const SymmetricTensor<2, dim, Number> b_bar_tr = J23 * b_tr;
-      const SymmetricTensor<2, dim, Number> tau_dev_tr =
+      const SymmetricTensor<2, material_dim, Number> Cp_inv_n(history_n.Cp_inv);
+      const SymmetricTensor<2, material_dim, Number> b_tr =
+        push_forward(F, Cp_inv_n);
+      const Number                                   mu_g     = mu * g_dev;
+      const SymmetricTensor<2, material_dim, Number> b_bar_tr = J23 * b_tr;
+      const SymmetricTensor<2, material_dim, Number> tau_dev_tr =
         mu_g * deviator(b_bar_tr);
       const Number norm_tr = std::sqrt(tau_dev_tr * tau_dev_tr);
       // The yielding branch of r at alpha_n against the non-yielding one,
       // r_n: the point yields where the force of the rest of the field,
       // r_n, exceeds what the trial state leaves (see the header).
-      e.trial_yielding =
-        std::sqrt(1.5) * value_of(norm_tr) -
-          flow_resistance_of(history_n.alpha, value_of(s), p) +
-          history_n.r >
-        0.;
+      e.trial_yielding = std::sqrt(1.5) * value_of(norm_tr) -
+                           flow_resistance_of(history_n.alpha, value_of(s), p) +
+                           history_n.r >
+                         0.;
       e.yielding = frozen_yielding ? *frozen_yielding : e.trial_yielding;
 
       // 2. Plastic flow from the current alpha of the global field, at
       // every point and not clamped at alpha < alpha_n (see the header).
       e.Cp_inv = Cp_inv_n;
-      SymmetricTensor<2, dim, Number> n_tr;
+      SymmetricTensor<2, material_dim, Number> n_tr;
       if (value_of(norm_tr) > 0.)
         {
           const Number lambda = std::sqrt(1.5) * (alpha - history_n.alpha) / dt;
-          const Tensor<2, dim, Number> F_inv = invert(F);
+          const Tensor<2, material_dim, Number> F_inv = invert(F);
           // Where chi_p = 0 the direction is tau_tr / sqrt(|tau_tr|^2 +
           // eps^2) (see the header).
           const double eps =
             e.yielding ? 0. : elastic_direction_floor * p.initial_yield;
           const Number inverse_norm =
             1. / std::sqrt(norm_tr * norm_tr + eps * eps);
-          n_tr                = inverse_norm * tau_dev_tr;
+          n_tr = inverse_norm * tau_dev_tr;
           if (p.flow_integration == FlowIntegration::linear)
             {
               const Number factor = (2. / 3.) * dt * lambda * trace(b_tr);
               e.Cp_inv -=
-                factor * symmetrize(F_inv * Tensor<2, dim, Number>(n_tr) *
-                                    transpose(F_inv));
+                factor *
+                symmetrize(F_inv * Tensor<2, material_dim, Number>(n_tr) *
+                           transpose(F_inv));
             }
           else
             // b^e = exp(-2 dt lambda n) b_tr: n and b_tr commute.
             e.Cp_inv = symmetrize(
               F_inv * exponential(Number(-2. * dt * lambda) * n_tr) *
-              Tensor<2, dim, Number>(b_tr) * transpose(F_inv));
+              Tensor<2, material_dim, Number>(b_tr) * transpose(F_inv));
           // Plastic incompressibility: det (C^p)^{-1} = 1.
           const Number rescale = std::pow(determinant(e.Cp_inv), -1. / 3.);
           e.Cp_inv             = rescale * e.Cp_inv;
         }
 
       // 3. Stress and energies from bbar^e.
-      const SymmetricTensor<2, dim, Number> b_bar =
+      const SymmetricTensor<2, material_dim, Number> b_bar =
         J23 * push_forward(F, e.Cp_inv);
-      const Number                          tr_b    = trace(b_bar);
-      const SymmetricTensor<2, dim, Number> tau_dev = mu_g * deviator(b_bar);
+      const Number                                   tr_b = trace(b_bar);
+      const SymmetricTensor<2, material_dim, Number> tau_dev =
+        mu_g * deviator(b_bar);
       // J dPsi^e/dJ of kappa/2 ((J - 1)^2 - (1 - g) q(J - 1)).
       const Number pressure_part =
         kappa * e.J * ((e.J - 1.) - 0.5 * (1. - g_dev) * dq);
-      e.tau = pressure_part * unit_symmetric_tensor<dim, Number>() + tau_dev;
-      e.P   = Tensor<2, dim, Number>(e.tau) * transpose(invert(F));
+      e.tau =
+        pressure_part * unit_symmetric_tensor<material_dim, Number>() + tau_dev;
+      e.P = Tensor<2, material_dim, Number>(e.tau) * transpose(invert(F));
       const Number vol_plus = 0.5 * kappa * q;
       const Number vol      = 0.5 * kappa * (e.J - 1.) * (e.J - 1.);
       const Number dev      = 0.5 * mu * (tr_b - 3.);
@@ -288,18 +290,17 @@ namespace DuctileContact
         // second root where the flow overshoots and reverses tau_dev, a
         // spurious equilibrium that Newton found in the late neck of the
         // necking bar (force drop within one step while alpha stood still).
-        e.r += flow_resistance_of(alpha, s, p) -
-               std::sqrt(1.5) * (n_tr * tau_dev);
+        e.r +=
+          flow_resistance_of(alpha, s, p) - std::sqrt(1.5) * (n_tr * tau_dev);
       else
         {
           // Hold alpha at alpha_n with the yielding branch's slope, against
           // the force r_n that held it there at the last accepted step.
-          e.r +=
-            p.hold_stiffness_factor *
-              (mu_g * trace(b_bar_tr) +
-               hardening_slope_of(history_n.alpha, p)) *
-              (alpha - history_n.alpha) +
-            history_n.r;
+          e.r += p.hold_stiffness_factor *
+                   (mu_g * trace(b_bar_tr) +
+                    hardening_slope_of(history_n.alpha, p)) *
+                   (alpha - history_n.alpha) +
+                 history_n.r;
         }
       return e;
     }
@@ -339,17 +340,16 @@ namespace DuctileContact
     const double work = plastic_work_of(alpha, p);
     if (!p.degrade_plastic_energy)
       return work;
-    return work - (1. - degradation_of(s, p)) *
-                    degradable_part(work, p).first;
+    return work - (1. - degradation_of(s, p)) * degradable_part(work, p).first;
   }
 
 
 
   double
-  elastic_energy(const Tensor<2, dim>          &F,
-                 const SymmetricTensor<2, dim> &Cp_inv,
-                 const double                   s,
-                 const PlasticityParameters    &p)
+  elastic_energy(const Tensor<2, material_dim>          &F,
+                 const SymmetricTensor<2, material_dim> &Cp_inv,
+                 const double                            s,
+                 const PlasticityParameters             &p)
   {
     const double J     = determinant(F);
     const double g_dev = degradation_of(s, p);
@@ -362,24 +362,25 @@ namespace DuctileContact
 
 
   double
-  plastic_work_of_step(const Tensor<2, dim>          &F_n,
-                       const Tensor<2, dim>          &F,
-                       const PlasticHistory          &history_n,
-                       const SymmetricTensor<2, dim> &Cp_inv,
-                       const double                   s_n,
-                       const double                   s,
-                       const PlasticityParameters    &p)
+  plastic_work_of_step(const Tensor<2, material_dim>          &F_n,
+                       const Tensor<2, material_dim>          &F,
+                       const PlasticHistory                   &history_n,
+                       const SymmetricTensor<2, material_dim> &Cp_inv,
+                       const double                            s_n,
+                       const double                            s,
+                       const PlasticityParameters             &p)
   {
-    const SymmetricTensor<2, dim> &C_n     = history_n.Cp_inv;
-    const auto                     release = [&](const Tensor<2, dim> &G) {
+    const SymmetricTensor<2, material_dim> &C_n = history_n.Cp_inv;
+    const auto release = [&](const Tensor<2, material_dim> &G) {
       return elastic_energy(G, C_n, s, p) - elastic_energy(G, Cp_inv, s, p);
     };
     // The trial yield function of evaluate() at G with the phase field
     // @p phase.
-    const auto trial = [&](const Tensor<2, dim> &G, const double phase) {
-      const SymmetricTensor<2, dim> b_bar =
+    const auto trial = [&](const Tensor<2, material_dim> &G,
+                           const double                   phase) {
+      const SymmetricTensor<2, material_dim> b_bar =
         std::pow(determinant(G), -2. / 3.) * push_forward(G, C_n);
-      const SymmetricTensor<2, dim> tau_dev =
+      const SymmetricTensor<2, material_dim> tau_dev =
         p.shear_modulus * degradation_of(phase, p) * deviator(b_bar);
       return std::sqrt(1.5) * tau_dev.norm() -
              flow_resistance_of(history_n.alpha, phase, p) + history_n.r;
@@ -396,14 +397,14 @@ namespace DuctileContact
 
 
   MaterialResponse
-  plastic_update(const Tensor<2, dim>       &F,
-                 const PlasticHistory       &history_n,
-                 const double                alpha,
-                 const double                s,
-                 const double                dt,
-                 const PlasticityParameters &parameters,
-                 const bool                  with_tangent,
-                 const std::optional<bool>  &frozen_yielding)
+  plastic_update(const Tensor<2, material_dim> &F,
+                 const PlasticHistory          &history_n,
+                 const double                   alpha,
+                 const double                   s,
+                 const double                   dt,
+                 const PlasticityParameters    &parameters,
+                 const bool                     with_tangent,
+                 const std::optional<bool>     &frozen_yielding)
   {
     MaterialResponse response;
     if (!with_tangent)
@@ -423,10 +424,10 @@ namespace DuctileContact
       }
 
     // Directions: F_cD -> 3c + D, alpha -> 9, s -> 10.
-    Tensor<2, dim, ADNumber> F_ad;
-    for (unsigned int c = 0; c < dim; ++c)
-      for (unsigned int D = 0; D < dim; ++D)
-        F_ad[c][D] = ADNumber(11, dim * c + D, F[c][D]);
+    Tensor<2, material_dim, ADNumber> F_ad;
+    for (unsigned int c = 0; c < material_dim; ++c)
+      for (unsigned int D = 0; D < material_dim; ++D)
+        F_ad[c][D] = ADNumber(11, material_dim * c + D, F[c][D]);
     const ADNumber             alpha_ad(11, 9, alpha), s_ad(11, 10, s);
     const Evaluation<ADNumber> e = evaluate<ADNumber>(
       F_ad, history_n, alpha_ad, s_ad, dt, parameters, frozen_yielding);
@@ -439,23 +440,23 @@ namespace DuctileContact
     response.trial_yielding = e.trial_yielding;
     response.updated.alpha  = alpha;
     response.updated.r      = e.r.val();
-    for (unsigned int a = 0; a < dim; ++a)
-      for (unsigned int b = a; b < dim; ++b)
+    for (unsigned int a = 0; a < material_dim; ++a)
+      for (unsigned int b = a; b < material_dim; ++b)
         {
           response.tau[a][b]            = e.tau[a][b].val();
           response.updated.Cp_inv[a][b] = e.Cp_inv[a][b].val();
         }
-    for (unsigned int a = 0; a < dim; ++a)
-      for (unsigned int B = 0; B < dim; ++B)
+    for (unsigned int a = 0; a < material_dim; ++a)
+      for (unsigned int B = 0; B < material_dim; ++B)
         {
           response.P[a][B] = e.P[a][B].val();
-          for (unsigned int c = 0; c < dim; ++c)
-            for (unsigned int D = 0; D < dim; ++D)
-              response.dP_dF[a][B][c][D] = e.P[a][B].dx(dim * c + D);
+          for (unsigned int c = 0; c < material_dim; ++c)
+            for (unsigned int D = 0; D < material_dim; ++D)
+              response.dP_dF[a][B][c][D] = e.P[a][B].dx(material_dim * c + D);
           response.dP_dalpha[a][B]    = e.P[a][B].dx(9);
           response.dP_ds[a][B]        = e.P[a][B].dx(10);
-          response.dr_dF[a][B]        = e.r.dx(dim * a + B);
-          response.dpsi_plus_dF[a][B] = e.psi_plus.dx(dim * a + B);
+          response.dr_dF[a][B]        = e.r.dx(material_dim * a + B);
+          response.dpsi_plus_dF[a][B] = e.psi_plus.dx(material_dim * a + B);
         }
     response.dpsi_plus_dalpha = e.psi_plus.dx(9);
     response.dpsi_plus_ds     = e.psi_plus.dx(10);

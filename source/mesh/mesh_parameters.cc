@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <ductile_contact/core/expression.h>
 #include <ductile_contact/core/input_error.h>
 #include <ductile_contact/mesh/mesh_parameters.h>
 
@@ -35,7 +36,8 @@ namespace DuctileContact
       refinement_boxes_text,
       "Boxes in which cells are refined further, after the global "
       "refinements: 'x0,y0,z0 : x1,y1,z1 : n' with the lower and upper "
-      "corners [m] and the number n of extra refinements; several boxes are "
+      "corners [m] ('x0,y0 : x1,y1 : n' in 2-D) and the number n of extra "
+      "refinements; several boxes are "
       "separated by ';'. A cell is refined if its centre lies in the box. "
       "Empty: no local refinement.",
       Patterns::Anything());
@@ -101,14 +103,18 @@ namespace DuctileContact
     prm.enter_subsection("Box");
     prm.add_parameter("Lower corner",
                       box.lower_corner,
-                      "Lower corner (x, y, z) of the box [m].");
+                      "Lower corner (x, y, z) of the box [m]; (x, y) in "
+                      "2-D.");
     prm.add_parameter("Upper corner",
                       box.upper_corner,
-                      "Upper corner (x, y, z) of the box [m].");
+                      "Upper corner (x, y, z) of the box [m]; (x, y) in "
+                      "2-D. Boundary ids 0-5 on the faces x = x0, x = x1, "
+                      "y = y0, y = y1, z = z0, z = z1 (0-3 on the edges of "
+                      "the rectangle in 2-D); material id 0.");
     prm.add_parameter("Subdivisions",
                       box.subdivisions,
-                      "Number of coarse cells along x, y, z.",
-                      Patterns::List(Patterns::Integer(1), 3, 3, ","));
+                      "Number of coarse cells along x, y, z (x, y in 2-D).",
+                      Patterns::List(Patterns::Integer(1), dim, dim, ","));
     prm.leave_subsection();
 
     prm.enter_subsection("Two bodies");
@@ -187,13 +193,16 @@ namespace DuctileContact
     prm.leave_subsection();
 
     prm.enter_subsection("Gmsh");
-    prm.add_parameter("File name",
-                      gmsh.file_name,
-                      "Gmsh .msh file (format 2.2 or 4.1, hexahedra); a "
-                      "relative name is read from the folder of the input "
-                      "file, wherever the program is started (parameters.prm "
-                      "in the results records it as an absolute path).",
-                      Patterns::Anything());
+    prm.add_parameter(
+      "File name",
+      gmsh.file_name,
+      "Gmsh .msh file (format 2.2 or 4.1, hexahedra; "
+      "quadrilaterals in the x-y plane in 2-D, with physical "
+      "surfaces as bodies and physical curves as boundaries); a "
+      "relative name is read from the folder of the input "
+      "file, wherever the program is started (parameters.prm "
+      "in the results records it as an absolute path).",
+      Patterns::Anything());
     prm.leave_subsection();
   }
 
@@ -209,7 +218,8 @@ namespace DuctileContact
       check_input(coords.size() == dim,
                   entry,
                   text,
-                  "a point needs three comma-separated coordinates");
+                  "a point needs " + vector_size_word() +
+                    " comma-separated coordinates");
       Point<dim> p;
       for (unsigned int d = 0; d < dim; ++d)
         try
@@ -240,7 +250,8 @@ namespace DuctileContact
         check_input(parts.size() == 3,
                     boxes_entry,
                     box_text,
-                    "each box must read 'x0,y0,z0 : x1,y1,z1 : n'");
+                    dim == 2 ? "each box must read 'x0,y0 : x1,y1 : n'"
+                             : "each box must read 'x0,y0,z0 : x1,y1,z1 : n'");
         RefinementBox b;
         b.lower    = parse_point(parts[0], boxes_entry);
         b.upper    = parse_point(parts[1], boxes_entry);
@@ -283,6 +294,13 @@ namespace DuctileContact
                     "the upper corner must exceed the lower corner (" +
                       Utilities::to_string(box.lower_corner[d]) +
                       ") in every coordinate");
+
+    check_input(dim == 3 || (scene != SceneType::two_bodies &&
+                             scene != SceneType::round_bar),
+                "Mesh/Scene",
+                name_of(scene_names(), scene),
+                "'two bodies' and 'round bar' are three-dimensional scenes; "
+                "with Dimension = 2 use 'box' or 'gmsh'");
 
     if (scene == SceneType::two_bodies)
       {

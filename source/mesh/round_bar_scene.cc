@@ -6,6 +6,9 @@
 
 #include <cmath>
 
+// A three-dimensional scene: MeshParameters::check() refuses it in the
+// plane-strain build, which therefore has no builder for it.
+#if DUCTILE_CONTACT_DIM == 3
 namespace DuctileContact
 {
   using namespace dealii;
@@ -186,3 +189,4 @@ namespace DuctileContact
     tria.refine_global(refinements);
   }
 } // namespace DuctileContact
+#endif

@@ -2,6 +2,9 @@
 
 #include <ductile_contact/mesh/scene.h>
 
+// A three-dimensional scene: MeshParameters::check() refuses it in the
+// plane-strain build, which therefore has no builder for it.
+#if DUCTILE_CONTACT_DIM == 3
 namespace DuctileContact
 {
   using namespace dealii;
@@ -109,3 +112,4 @@ namespace DuctileContact
           }
   }
 } // namespace DuctileContact
+#endif

@@ -1,3 +1,4 @@
+#include <ductile_contact/core/expression.h>
 #include <ductile_contact/core/input_error.h>
 #include <ductile_contact/output/output_parameters.h>
 
@@ -73,7 +74,8 @@ namespace DuctileContact
         check_input(valid,
                     "Output/Probe points",
                     text,
-                    "points of three coordinates x, y, z separated by ';'");
+                    "points of " + vector_size_word() + " coordinates " +
+                      coordinate_list() + " separated by ';'");
         probe_points.push_back(p);
       }
     check_input(!directory.empty(),

@@ -76,10 +76,10 @@ namespace DuctileContact
 
     /// ln(A) of a symmetric positive definite A, through its eigenvalues;
     /// zero for a cell without averages (A = 0).
-    SymmetricTensor<2, dim>
-    logarithm(const SymmetricTensor<2, dim> &A)
+    SymmetricTensor<2, material_dim>
+    logarithm(const SymmetricTensor<2, material_dim> &A)
     {
-      SymmetricTensor<2, dim> log_A;
+      SymmetricTensor<2, material_dim> log_A;
       if (!(determinant(A) > 0.))
         return log_A;
       for (const auto &[value, vector] : eigenvectors(A))
@@ -95,7 +95,7 @@ namespace DuctileContact
     /// A cell's tensor fields: the averaged Kirchhoff and Cauchy stress
     /// [Pa], the logarithmic strain 1/2 ln(b) and the plastic strain
     /// 1/2 ln(C^p) of the averaged b and C^p.
-    std::array<SymmetricTensor<2, dim>, 4>
+    std::array<SymmetricTensor<2, material_dim>, 4>
     tensor_fields(const CellQuantities &cells, const unsigned int i)
     {
       return {{cells.kirchhoff[i],
@@ -167,15 +167,17 @@ namespace DuctileContact
     data_out.add_data_vector(body, "body");
     data_out.add_data_vector(rank, "mpi_rank");
 
-    // The tensor fields as piecewise constant (DG0) fields: in vtu as
-    // tensors (ParaView shows each as one), in HDF5, whose writer keeps
-    // three components of a non-scalar field, as the six scalars
-    // NAME_xx, NAME_yy, NAME_zz, NAME_xy, NAME_xz, NAME_yz; the stress
-    // triaxiality sigma_m / sigma_eq of the averaged Cauchy stress as cell
-    // data.
-    const bool         as_tensor = format == OutputFormat::vtu;
+    // The tensor fields (3 x 3 in plane strain too) as piecewise constant
+    // (DG0) fields: in 3-D vtu as tensors (ParaView shows each as one); in
+    // HDF5, whose writer keeps three components of a non-scalar field, and
+    // in 2-D, where a tensor of the output has 2 x 2 components, as the six
+    // scalars NAME_xx, NAME_yy, NAME_zz, NAME_xy, NAME_xz, NAME_yz; the
+    // stress triaxiality sigma_m / sigma_eq of the averaged Cauchy stress
+    // as cell data.
+    const bool as_tensor = format == OutputFormat::vtu && dim == material_dim;
     const unsigned int n_per =
-      as_tensor ? dim * dim : SymmetricTensor<2, dim>::n_independent_components;
+      as_tensor ? material_dim * material_dim
+                : SymmetricTensor<2, material_dim>::n_independent_components;
     const unsigned int n_tensor = tensor_names.size() * n_per;
     FESystem<dim>      fe_tensor(FE_DGQ<dim>(0), n_tensor);
     DoFHandler<dim>    tensor_dofs(tria);
@@ -195,7 +197,7 @@ namespace DuctileContact
           for (unsigned int k = 0; k < fields.size(); ++k)
             for (unsigned int c = 0; c < n_per; ++c)
               tensors[indices[k * n_per + c]] =
-                as_tensor ? fields[k][c / dim][c % dim]
+                as_tensor ? fields[k][c / material_dim][c % material_dim]
                           : fields[k].access_raw_entry(c);
           const double equivalent = von_mises(cells.cauchy[i]);
           triaxiality[i] =
@@ -208,7 +210,7 @@ namespace DuctileContact
       for (unsigned int c = 0; c < n_per; ++c)
         {
           const auto ab =
-            SymmetricTensor<2, dim>::unrolled_to_component_indices(c);
+            SymmetricTensor<2, material_dim>::unrolled_to_component_indices(c);
           tensor_component_names.push_back(
             as_tensor ? name : name + "_" + xyz[ab[0]] + xyz[ab[1]]);
         }

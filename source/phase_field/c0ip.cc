@@ -7,7 +7,8 @@ namespace DuctileContact
   double
   default_c0ip_penalty(const unsigned int degree)
   {
-    return 1.5 * degree * (degree + 1.);
+    // (d / 2) p (p + 1) in d dimensions.
+    return 0.5 * dim * degree * (degree + 1.);
   }
 
 

@@ -1,5 +1,6 @@
 #include <deal.II/base/function_parser.h>
 
+#include <ductile_contact/core/expression.h>
 #include <ductile_contact/discretisation/bernstein_element.h>
 #include <ductile_contact/phase_field/initial_crack.h>
 
@@ -21,7 +22,7 @@ namespace DuctileContact
       if (b.fracture && !b.crack.initial_crack.empty())
         {
           auto f = std::make_unique<FunctionParser<dim>>(1);
-          f->initialize("x,y,z", b.crack.initial_crack, {});
+          f->initialize(coordinate_variables(), b.crack.initial_crack, {});
           cracks.emplace(b.material_id, std::move(f));
         }
     if (cracks.empty())

@@ -37,9 +37,12 @@ namespace DuctileContact
   LinearSolver::setup()
   {
     // deal.II 9.4 has no DoFTools::extract_rigid_body_modes: build them from
-    // the support points. Mode r at a DoF of component c and point x:
-    // translations e_r, rotations (-y, x, 0), (0, -z, y), (z, 0, -x).
-    const IndexSet &owned =
+    // the support points. Modes at a DoF of component c and point x: the
+    // translations e_r, and a rotation in each coordinate plane (i, j),
+    // u_i = -x_j, u_j = x_i: (-y, x) in 2-D; (-y, x, 0), (-z, 0, x),
+    // (0, -z, y) in 3-D.
+    constexpr unsigned int n_modes = dim * (dim + 1) / 2;
+    const IndexSet        &owned =
       discretisation.owned_partitioning[Block::displacement];
     std::vector<int> global_ids;
     for (const auto i : owned)
@@ -50,7 +53,7 @@ namespace DuctileContact
                          0,
                          Epetra_MpiComm(
                            discretisation.dof_handler.get_communicator()));
-    rigid_body_modes = std::make_unique<Epetra_MultiVector>(map, 6);
+    rigid_body_modes = std::make_unique<Epetra_MultiVector>(map, n_modes);
 
     std::vector<types::global_dof_index> dof_indices;
     for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
@@ -68,16 +71,15 @@ namespace DuctileContact
               const Point<dim> x =
                 discretisation.mapping[0].transform_unit_to_real_cell(
                   cell, fe.unit_support_point(i));
-              const int row     = map.LID(static_cast<int>(dof_indices[i]));
-              double    mode[6] = {0, 0, 0, 0, 0, 0};
-              mode[c]           = 1.;
-              const double rot[3][3] = {{-x[1], x[0], 0.},
-                                        {0., -x[2], x[1]},
-                                        {x[2], 0., -x[0]}};
-              for (unsigned int r = 0; r < 3; ++r)
-                mode[3 + r] = rot[r][c];
-              for (unsigned int r = 0; r < 6; ++r)
-                (*rigid_body_modes)[r][row] = mode[r];
+              const int row = map.LID(static_cast<int>(dof_indices[i]));
+              double    mode[n_modes] = {};
+              mode[c]                 = 1.;
+              unsigned int r          = dim;
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int b = a + 1; b < dim; ++b, ++r)
+                  mode[r] = c == a ? -x[b] : c == b ? x[a] : 0.;
+              for (unsigned int k = 0; k < n_modes; ++k)
+                (*rigid_body_modes)[k][row] = mode[k];
             }
         }
 

@@ -13,6 +13,7 @@
 #include <ductile_contact/solver/solver_parameters.h>
 
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,15 @@ namespace DuctileContact
   overrides_as_prm(const std::vector<std::string> &overrides);
 
   /**
+   * The entry `Dimension` of the input file @p file_name with the --set
+   * @p overrides, read alone; nothing when the file cannot be read or the
+   * value is not 2 or 3 (the full parse then says why).
+   */
+  std::optional<unsigned int>
+  input_dimension(const std::string              &file_name,
+                  const std::vector<std::string> &overrides);
+
+  /**
    * Every input of a run. The in-class defaults of the structs are the only
    * defaults (entries are bound with ParameterHandler::add_parameter).
    *
@@ -38,6 +48,9 @@ namespace DuctileContact
    */
   struct RunParameters
   {
+    /// `Dimension`: 3, or 2 for plane strain; always the build's dim once
+    /// parsed (the program hands other inputs to the other build).
+    unsigned int   dimension = dim;
     MeshParameters mesh;
     unsigned int   fe_degree         = 2;
     FieldBasis     phase_field_basis = FieldBasis::lagrange;

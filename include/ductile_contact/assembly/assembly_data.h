@@ -207,7 +207,8 @@ namespace DuctileContact
   struct CellQuantities
   {
     dealii::Vector<float> von_mises, mean_stress, J, crack_driving_force;
-    std::vector<dealii::SymmetricTensor<2, dim>> kirchhoff, cauchy, b, Cp;
+    std::vector<dealii::SymmetricTensor<2, material_dim>> kirchhoff, cauchy, b,
+      Cp;
   };
 
   /**

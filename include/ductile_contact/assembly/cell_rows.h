@@ -17,6 +17,37 @@
 namespace DuctileContact
 {
   /**
+   * F = I + Grad u as the material point's 3 x 3 tensor: in 2-D the
+   * plane-strain F = [[I + Grad u, 0], [0, 1]].
+   */
+  inline dealii::Tensor<2, material_dim>
+  deformation_gradient(const dealii::Tensor<2, dim> &grad_u)
+  {
+    dealii::Tensor<2, material_dim> F;
+    for (unsigned int i = 0; i < material_dim; ++i)
+      F[i][i] = 1.;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        F[i][j] += grad_u[i][j];
+    return F;
+  }
+
+  /**
+   * Row @p row of a material-point tensor (3 x 3: P, dP/dalpha, dr/dF, ...)
+   * against the gradient @p g of a shape function, sum_{B < dim} row[B]
+   * g[B]: in plane strain the out-of-plane column meets no gradient.
+   */
+  inline double
+  in_plane(const dealii::Tensor<1, material_dim> &row,
+           const dealii::Tensor<1, dim>          &g)
+  {
+    double v = 0.;
+    for (unsigned int B = 0; B < dim; ++B)
+      v += row[B] * g[B];
+    return v;
+  }
+
+  /**
    * The rows one cell (or one C0IP face) adds to the system: the local
    * tangent, f_int and the Newton right-hand side -R over its DoFs, and per
    * DoF the size of the terms summed into it (AssemblyInfo::

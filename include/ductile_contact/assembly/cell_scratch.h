@@ -110,7 +110,7 @@ namespace DuctileContact
     bool                   has_averages = false;
     unsigned int           cell_index   = 0;
     float von_mises = 0, mean_stress = 0, mean_J = 0, crack_driving_force = 0;
-    dealii::SymmetricTensor<2, dim> kirchhoff, cauchy, b, Cp;
+    dealii::SymmetricTensor<2, material_dim> kirchhoff, cauchy, b, Cp;
   };
 
 } // namespace DuctileContact

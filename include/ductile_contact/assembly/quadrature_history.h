@@ -55,7 +55,7 @@ namespace DuctileContact
 
     /// Doubles per point in pack().
     static constexpr unsigned int packed_size =
-      dealii::SymmetricTensor<2, dim>::n_independent_components + 3;
+      dealii::SymmetricTensor<2, material_dim>::n_independent_components + 3;
 
     /// The history of @p cell's points as one flat vector (checkpoints).
     template <typename CellIterator>

@@ -120,30 +120,30 @@ namespace DuctileContact
     /// The material law at point @p q of the cell @p cell_index with the
     /// branches of @p pass (evaluated, recorded or frozen).
     MaterialResponse
-    point_response(const BodyParameters         &body,
-                   const dealii::Tensor<2, dim> &F,
-                   const unsigned int            q,
-                   const unsigned int            cell_index,
-                   const BodyFields             &fields,
-                   const CellScratch            &scratch,
-                   const Pass                   &pass,
-                   AssemblyReduction            &sums) const;
+    point_response(const BodyParameters                  &body,
+                   const dealii::Tensor<2, material_dim> &F,
+                   const unsigned int                     q,
+                   const unsigned int                     cell_index,
+                   const BodyFields                      &fields,
+                   const CellScratch                     &scratch,
+                   const Pass                            &pass,
+                   AssemblyReduction                     &sums) const;
 
     /// The hardening terms of point @p q: energy, extremes, plastic work
     /// (when @p committing) and the rows of (50).
     void
-    hardening_point(const MaterialResponse       &m,
-                    const BodyParameters         &body,
-                    const PlasticityParameters   &plastic,
-                    const dealii::Tensor<2, dim> &F,
-                    const unsigned int            q,
-                    const bool                    committing,
-                    const CellScratch            &scratch,
-                    const LocalDofs              &dofs,
-                    const double                  JxW,
-                    const bool                    tangent,
-                    LocalRows                    &rows,
-                    AssemblyReduction            &sums) const;
+    hardening_point(const MaterialResponse                &m,
+                    const BodyParameters                  &body,
+                    const PlasticityParameters            &plastic,
+                    const dealii::Tensor<2, material_dim> &F,
+                    const unsigned int                     q,
+                    const bool                             committing,
+                    const CellScratch                     &scratch,
+                    const LocalDofs                       &dofs,
+                    const double                           JxW,
+                    const bool                             tangent,
+                    LocalRows                             &rows,
+                    AssemblyReduction                     &sums) const;
 
     /// The phase-field terms of point @p q with the driving energy @p psi
     /// (crack_driving_energy()): the history maximum with its branch,

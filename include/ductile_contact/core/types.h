@@ -4,18 +4,33 @@
  * @file
  * Names shared by every part of ductile-contact.
  *
- * The program is three-dimensional only (the paper's scene, contact and the
- * fourth-order phase field are all 3-D), so the space dimension is a constant
- * rather than a template parameter: this keeps every heavy deal.II template
- * instantiated once, which matters for compile times on small machines.
+ * The space dimension is a constant of each build rather than a template
+ * parameter: the library is compiled once with DUCTILE_CONTACT_DIM = 3 and
+ * once with 2 (plane strain), and the program picks the build that the
+ * input's `Dimension` names (source/main.cc). This keeps every heavy
+ * deal.II template instantiated once per build, which matters for compile
+ * times on small machines.
  */
 
 #include <deal.II/base/types.h>
 
+#ifndef DUCTILE_CONTACT_DIM
+#error "DUCTILE_CONTACT_DIM (2 or 3) must be defined by the build"
+#endif
+
 namespace DuctileContact
 {
-  /// Space dimension of every mesh in this program.
-  constexpr unsigned int dim = 3;
+  /// Space dimension of every mesh of this build: 3, or 2 in plane strain.
+  constexpr unsigned int dim = DUCTILE_CONTACT_DIM;
+  static_assert(dim == 2 || dim == 3, "DUCTILE_CONTACT_DIM must be 2 or 3");
+
+  /**
+   * Dimension of the material point, 3 in every build: in plane strain the
+   * deformation gradient is F = [[F_2x2, 0], [0, 1]] and the laws of
+   * materials/ (the isochoric split, F = Fe Fp, the out-of-plane plastic
+   * stretch, tau_33) stay the 3-D ones (doc/model.md section 2.2).
+   */
+  constexpr unsigned int material_dim = 3;
 
   /**
    * Blocks of the global system [u | alpha | s] (doc/model.md section 1).
@@ -30,12 +45,12 @@ namespace DuctileContact
     constexpr unsigned int n_blocks     = 3;
   } // namespace Block
 
-  /// Vector components of the FE system: u_x, u_y, u_z, alpha, s.
+  /// Vector components of the FE system: u_x, u_y (, u_z), alpha, s.
   namespace Component
   {
     constexpr unsigned int first_displacement = 0;
-    constexpr unsigned int hardening          = 3;
-    constexpr unsigned int phase_field        = 4;
-    constexpr unsigned int n_components       = 5;
+    constexpr unsigned int hardening          = dim;
+    constexpr unsigned int phase_field        = dim + 1;
+    constexpr unsigned int n_components       = dim + 2;
   } // namespace Component
 } // namespace DuctileContact

@@ -6,6 +6,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/fe/component_mask.h>
 
+#include <ductile_contact/core/expression.h>
 #include <ductile_contact/core/types.h>
 
 #include <array>
@@ -29,16 +30,16 @@ namespace DuctileContact
     dealii::types::boundary_id boundary_id = 0;
 
     std::string constrained_components_text;
-    std::string displacement_text = "0; 0; 0";
-    std::string traction_text     = "0; 0; 0";
+    std::string displacement_text = zero_vector_expression();
+    std::string traction_text     = zero_vector_expression();
     std::string constants_text;
 
-    /// Which of u_x, u_y, u_z are prescribed (Dirichlet).
-    std::array<bool, dim> constrained{{false, false, false}};
+    /// Which of u_x, u_y (, u_z) are prescribed (Dirichlet).
+    std::array<bool, dim> constrained{};
 
-    /// ubar: 5 components (u, alpha, s); alpha and s entries are zero.
+    /// ubar: all components (u, alpha, s); alpha and s entries are zero.
     std::unique_ptr<dealii::FunctionParser<dim>> displacement;
-    /// T: 3 components.
+    /// T: dim components.
     std::unique_ptr<dealii::FunctionParser<dim>> traction;
     /// False when the traction expression is identically "0; 0; 0".
     bool has_traction = false;

@@ -24,12 +24,12 @@ namespace DuctileContact
    * @param dt     the load step (the viscous terms are backward Euler)
    */
   MaterialResponse
-  evaluate_material(const BodyParameters         &body,
-                    const dealii::Tensor<2, dim> &F,
-                    const PlasticHistory         &history_n,
-                    const double                  alpha,
-                    const double                  s,
-                    const double                  dt,
-                    const bool                    with_tangent,
-                    const std::optional<bool>    &frozen_yielding = {});
+  evaluate_material(const BodyParameters                  &body,
+                    const dealii::Tensor<2, material_dim> &F,
+                    const PlasticHistory                  &history_n,
+                    const double                           alpha,
+                    const double                           s,
+                    const double                           dt,
+                    const bool                             with_tangent,
+                    const std::optional<bool> &frozen_yielding = {});
 } // namespace DuctileContact

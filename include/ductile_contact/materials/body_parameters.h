@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <ductile_contact/core/expression.h>
 #include <ductile_contact/materials/crack_driver.h>
 #include <ductile_contact/materials/plasticity.h>
 
@@ -61,7 +62,7 @@ namespace DuctileContact
     double density = 0.;
     /// v(X) at t = 0 [m/s]: three muparser expressions of x, y, z
     /// separated by ';'.
-    std::string initial_velocity = "0; 0; 0";
+    std::string initial_velocity = zero_vector_expression();
 
     /// Whether the body carries the hardening field alpha (plasticity).
     bool plasticity = false;

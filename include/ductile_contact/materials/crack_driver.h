@@ -28,8 +28,7 @@ namespace DuctileContact
     static const NameTable<CrackDriverType> t{
       {CrackDriverType::elastic, "elastic"},
       {CrackDriverType::elastic_plastic, "elastic plus plastic work"},
-      {CrackDriverType::elastic_plastic_energy,
-       "elastic and plastic energy"}};
+      {CrackDriverType::elastic_plastic_energy, "elastic and plastic energy"}};
     return t;
   }
 
@@ -41,9 +40,9 @@ namespace DuctileContact
     /// The part of value that is -dPsi/ds / (-g_k'(s)) of the free energy:
     /// psi^+, and with 'elastic and plastic energy' all of it. The history
     /// driving work counts the work of the driver beyond it.
-    double                 variational = 0.;
-    dealii::Tensor<2, dim> d_dF;
-    double                 d_dalpha = 0., d_ds = 0.;
+    double                          variational = 0.;
+    dealii::Tensor<2, material_dim> d_dF;
+    double                          d_dalpha = 0., d_ds = 0.;
   };
 
   /// The parameters of the plastic work driver.

@@ -45,10 +45,10 @@ namespace DuctileContact
    * @param with_tangent compute A (otherwise A is left zero)
    */
   MaterialResponse
-  degraded_neo_hooke(const dealii::Tensor<2, dim> &F,
-                     const double                  s,
-                     const double                  mu,
-                     const double                  kappa,
-                     const DegradationParameters  &degradation,
-                     const bool                    with_tangent);
+  degraded_neo_hooke(const dealii::Tensor<2, material_dim> &F,
+                     const double                           s,
+                     const double                           mu,
+                     const double                           kappa,
+                     const DegradationParameters           &degradation,
+                     const bool                             with_tangent);
 } // namespace DuctileContact

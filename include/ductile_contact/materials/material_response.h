@@ -12,8 +12,8 @@ namespace DuctileContact
   struct PlasticHistory
   {
     /// (C^p)^{-1}, symmetric with determinant 1.
-    dealii::SymmetricTensor<2, dim> Cp_inv =
-      dealii::unit_symmetric_tensor<dim>();
+    dealii::SymmetricTensor<2, material_dim> Cp_inv =
+      dealii::unit_symmetric_tensor<material_dim>();
     /// alpha_n
     double alpha = 0.;
     /// r_n, the local part r of (50) at the accepted state, in Pa: the
@@ -40,23 +40,23 @@ namespace DuctileContact
     /// Crack driving energy psi^+ of doc/model.md (27): H = -g_k'(s) psi^+.
     double psi_plus = 0.;
     /// Kirchhoff stress tau of doc/model.md (18)-(19).
-    dealii::SymmetricTensor<2, dim> tau;
+    dealii::SymmetricTensor<2, material_dim> tau;
     /// First Piola-Kirchhoff stress P = tau F^{-T}.
-    dealii::Tensor<2, dim> P;
+    dealii::Tensor<2, material_dim> P;
     /// dP/dF, [a][B][c][D] = dP_aB / dF_cD; dP/dalpha, dP/ds.
-    dealii::Tensor<4, dim> dP_dF;
-    dealii::Tensor<2, dim> dP_dalpha, dP_ds;
+    dealii::Tensor<4, material_dim> dP_dF;
+    dealii::Tensor<2, material_dim> dP_dalpha, dP_ds;
     /// Local part r of the hardening equation (50) per unit volume and its
     /// derivatives (plastic bodies only).
-    double                 r = 0., dr_dalpha = 0., dr_ds = 0.;
-    dealii::Tensor<2, dim> dr_dF;
+    double                          r = 0., dr_dalpha = 0., dr_ds = 0.;
+    dealii::Tensor<2, material_dim> dr_dF;
     /// chi_p used, and chi_p of the trial-state test (they differ only when
     /// a frozen switch was imposed).
     bool yielding = false, trial_yielding = false;
     /// dpsi^+/dF, dpsi^+/dalpha, dpsi^+/ds (psi^+ depends on s where chi_p
     /// = 0 and alpha != alpha_n, see plastic_update()).
-    dealii::Tensor<2, dim> dpsi_plus_dF;
-    double                 dpsi_plus_dalpha = 0., dpsi_plus_ds = 0.;
+    dealii::Tensor<2, material_dim> dpsi_plus_dF;
+    double                          dpsi_plus_dalpha = 0., dpsi_plus_ds = 0.;
     /// (C^p)^{-1} and alpha after this step (plastic bodies only).
     PlasticHistory updated;
   };

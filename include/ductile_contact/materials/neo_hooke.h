@@ -29,20 +29,20 @@ namespace DuctileContact
    * @param with_tangent  compute A (otherwise A is left zero)
    */
   MaterialResponse
-  neo_hooke(const dealii::Tensor<2, dim> &F,
-            const double                  mu,
-            const double                  kappa,
-            const bool                    with_tangent);
+  neo_hooke(const dealii::Tensor<2, material_dim> &F,
+            const double                           mu,
+            const double                           kappa,
+            const bool                             with_tangent);
 
   /// A from the spatial tangent c and tau (see neo_hooke()).
-  dealii::Tensor<4, dim>
-  first_elasticity_tensor(const dealii::Tensor<2, dim>          &F_inv,
-                          const dealii::SymmetricTensor<4, dim> &c,
-                          const dealii::SymmetricTensor<2, dim> &tau);
+  dealii::Tensor<4, material_dim>
+  first_elasticity_tensor(const dealii::Tensor<2, material_dim>          &F_inv,
+                          const dealii::SymmetricTensor<4, material_dim> &c,
+                          const dealii::SymmetricTensor<2, material_dim> &tau);
 
   /// von Mises equivalent sqrt(3/2 dev(t):dev(t)) of a stress tensor.
   inline double
-  von_mises(const dealii::SymmetricTensor<2, dim> &t)
+  von_mises(const dealii::SymmetricTensor<2, material_dim> &t)
   {
     const auto d = dealii::deviator(t);
     return std::sqrt(1.5 * (d * d));

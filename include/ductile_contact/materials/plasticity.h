@@ -115,10 +115,10 @@ namespace DuctileContact
    * b^e = F (C^p)^{-1} F^T, with the split (17).
    */
   double
-  elastic_energy(const dealii::Tensor<2, dim>          &F,
-                 const dealii::SymmetricTensor<2, dim> &Cp_inv,
-                 const double                           s,
-                 const PlasticityParameters            &p);
+  elastic_energy(const dealii::Tensor<2, material_dim>          &F,
+                 const dealii::SymmetricTensor<2, material_dim> &Cp_inv,
+                 const double                                    s,
+                 const PlasticityParameters                     &p);
 
   /**
    * The plastic work of a step at a material point [J/m^3]: the elastic
@@ -132,19 +132,19 @@ namespace DuctileContact
    * theta (F - F_n) and F, where theta is the zero of the trial yield
    * function sqrt(3/2) |tau_dev,tr| - dPsi^p_loc/dalpha(alpha_n, .) + r_n
    * (at F_n with the phase field @p s_n of the step's start, at F with the
-   * new @p s) interpolated linearly between F_n and F. The trapezoidal rule over
-   * the whole step gives a point that yields only in the last part of its
+   * new @p s) interpolated linearly between F_n and F. The trapezoidal rule
+   * over the whole step gives a point that yields only in the last part of its
    * first plastic step half of the work it does there, and a local
    * plastic dissipation w - Delta Psi^p below zero.
    */
   double
-  plastic_work_of_step(const dealii::Tensor<2, dim>          &F_n,
-                       const dealii::Tensor<2, dim>          &F,
+  plastic_work_of_step(const dealii::Tensor<2, material_dim> &F_n,
+                       const dealii::Tensor<2, material_dim> &F,
                        const PlasticHistory                  &history_n,
-                       const dealii::SymmetricTensor<2, dim> &Cp_inv,
-                       const double                           s_n,
-                       const double                           s,
-                       const PlasticityParameters            &p);
+                       const dealii::SymmetricTensor<2, material_dim> &Cp_inv,
+                       const double                                    s_n,
+                       const double                                    s,
+                       const PlasticityParameters                     &p);
 
   /**
    * Material point update of doc/model.md section 3, steps 1-3, a pure
@@ -227,12 +227,12 @@ namespace DuctileContact
    * starts from, so that the residual is smooth along the line).
    */
   MaterialResponse
-  plastic_update(const dealii::Tensor<2, dim> &F,
-                 const PlasticHistory         &history_n,
-                 const double                  alpha,
-                 const double                  s,
-                 const double                  dt,
-                 const PlasticityParameters   &parameters,
-                 const bool                    with_tangent,
-                 const std::optional<bool>    &frozen_yielding = {});
+  plastic_update(const dealii::Tensor<2, material_dim> &F,
+                 const PlasticHistory                  &history_n,
+                 const double                           alpha,
+                 const double                           s,
+                 const double                           dt,
+                 const PlasticityParameters            &parameters,
+                 const bool                             with_tangent,
+                 const std::optional<bool>             &frozen_yielding = {});
 } // namespace DuctileContact

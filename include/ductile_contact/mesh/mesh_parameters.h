@@ -69,12 +69,24 @@ namespace DuctileContact
 
     struct Box
     {
-      dealii::Point<dim>        lower_corner{0., 0., 0.};
-      dealii::Point<dim>        upper_corner{1., 1., 1.};
-      std::vector<unsigned int> subdivisions{1, 1, 1};
+      dealii::Point<dim>        lower_corner;
+      dealii::Point<dim>        upper_corner = unit_corner();
+      std::vector<unsigned int> subdivisions =
+        std::vector<unsigned int>(dim, 1);
+
+      /// (1, 1, 1), or (1, 1) in 2-D.
+      static dealii::Point<dim>
+      unit_corner()
+      {
+        dealii::Point<dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = 1.;
+        return p;
+      }
     } box;
 
-    /// Plate + block of the paper's scene (doc/model.md section 7).
+    /// Plate + block of the paper's scene (doc/model.md section 7); 3-D
+    /// only.
     struct TwoBodies
     {
       dealii::Point<dim>        plate_size{0.3, 0.2, 0.02};
@@ -87,7 +99,7 @@ namespace DuctileContact
       double block_gap = 0.;
     } two_bodies;
 
-    /// Round bar of validation rung 3 (necking), axis along x.
+    /// Round bar of validation rung 3 (necking), axis along x; 3-D only.
     struct RoundBar
     {
       double        radius             = 6.413e-3;

@@ -23,7 +23,8 @@ namespace DuctileContact
   create_scene_mesh(const MeshParameters &parameters,
                     dealii::parallel::distributed::Triangulation<dim> &tria);
 
-  /// A brick with boundary ids 0..5 on the faces x-, x+, y-, y+, z-, z+.
+  /// A brick with boundary ids 0..5 on the faces x-, x+, y-, y+, z-, z+
+  /// (a rectangle with 0..3 on its edges x-, x+, y-, y+ in 2-D).
   void
   create_box_scene(const MeshParameters::Box  &parameters,
                    dealii::Triangulation<dim> &tria);

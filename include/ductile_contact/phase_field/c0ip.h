@@ -43,7 +43,8 @@ namespace DuctileContact
   };
 
   /**
-   * Default penalty gamma_IP = (d/2) p (p+1) = 1.5 p(p+1) in 3-D. doc/model.md
+   * Default penalty gamma_IP = (d/2) p (p+1): 1.5 p(p+1) in 3-D, p(p+1) in
+   * 2-D. doc/model.md
    * suggests p(p+1), the 2-D value of deal.II step-47; in 3-D with the
    * Laplacian form that is at the edge of stability: for Q2 the
    * manufactured solution's error jumps up at h = 1/8 (a near-singular
