@@ -41,6 +41,7 @@ declare -A variants=(
   [hertz_sphere]="default output direct amg"
   [ironing]="default output relative direct"
   [ductile_notch]="default output relative direct best"
+  [ductile_notch_2d]="default output"
   [sent_coarse]="default output relative constant direct monotone linear"
   [bar_impact]="default output"
 )
@@ -56,7 +57,8 @@ declare -A settings=(
   [best]="subsection Load stepping;  set Predictor = best linear;end"
 )
 order=(box_compression gmsh_distorted_cube necking_bar two_bodies two_bodies_no_contact
-       block_on_plate hertz_sphere ironing ductile_notch sent_coarse bar_impact)
+       block_on_plate hertz_sphere ironing ductile_notch ductile_notch_2d sent_coarse
+       bar_impact)
 
 jobs=("$@")
 if ((${#jobs[@]} == 0)); then
