@@ -510,7 +510,7 @@ end
                         double      &lateral_stretch)
   {
     const auto response = [&](const double lt) {
-      dealii::Tensor<2, DuctileContact::dim> F;
+      dealii::Tensor<2, DuctileContact::material_dim> F;
       F[0][0] = lambda;
       F[1][1] = F[2][2] = lt;
       return DuctileContact::neo_hooke(F, mu, kappa, false);
@@ -535,7 +535,7 @@ end
                         const DuctileContact::PlasticityParameters &p)
   {
     const auto solve_alpha =
-      [&](const dealii::Tensor<2, DuctileContact::dim> &F) {
+      [&](const dealii::Tensor<2, DuctileContact::material_dim> &F) {
         // Start just above alpha_n (the one-sided derivative of the flow).
         double                           alpha = history.alpha + 1e-12;
         DuctileContact::MaterialResponse r =
@@ -556,13 +556,13 @@ end
     double lo = 0.5, hi = 1.5;
     for (unsigned int i = 0; i < 60; ++i)
       {
-        const double                           mid = 0.5 * (lo + hi);
-        dealii::Tensor<2, DuctileContact::dim> F;
+        const double                                    mid = 0.5 * (lo + hi);
+        dealii::Tensor<2, DuctileContact::material_dim> F;
         F[0][0] = lambda;
         F[1][1] = F[2][2]                        = mid;
         (solve_alpha(F).tau[1][1] > 0 ? hi : lo) = mid;
       }
-    dealii::Tensor<2, DuctileContact::dim> F;
+    dealii::Tensor<2, DuctileContact::material_dim> F;
     F[0][0] = lambda;
     F[1][1] = F[2][2] = 0.5 * (lo + hi);
     return solve_alpha(F);
@@ -590,10 +590,11 @@ end
    */
   template <typename Derivative>
   double
-  point_gradient_error(const Derivative                             &derivative,
-                       const dealii::Tensor<2, DuctileContact::dim> &d_dF,
-                       const double                                  d_dalpha,
-                       const double                                  d_ds)
+  point_gradient_error(
+    const Derivative                                      &derivative,
+    const dealii::Tensor<2, DuctileContact::material_dim> &d_dF,
+    const double                                           d_dalpha,
+    const double                                           d_ds)
   {
     constexpr unsigned int dim  = DuctileContact::dim;
     double                 diff = 0., norm = 0.;
@@ -616,10 +617,10 @@ end
   /// I + A with the entries of A drawn from @p d (by rows) times
   /// @p amplitude: a random deformation gradient near the identity.
   template <typename Generator, typename Distribution>
-  dealii::Tensor<2, DuctileContact::dim>
+  dealii::Tensor<2, DuctileContact::material_dim>
   perturbed_identity(Generator &gen, Distribution &d, const double amplitude)
   {
-    dealii::Tensor<2, DuctileContact::dim> F =
+    dealii::Tensor<2, DuctileContact::material_dim> F =
       dealii::unit_symmetric_tensor<DuctileContact::dim>();
     for (unsigned int i = 0; i < DuctileContact::dim; ++i)
       for (unsigned int j = 0; j < DuctileContact::dim; ++j)
@@ -631,11 +632,11 @@ end
   /// amplitude 0.01, scaled to det 1) and the history with its (C^p)^{-1}
   /// and @p alpha.
   template <typename Generator, typename Distribution>
-  std::pair<dealii::Tensor<2, DuctileContact::dim>,
+  std::pair<dealii::Tensor<2, DuctileContact::material_dim>,
             DuctileContact::PlasticHistory>
   random_plastic_history(Generator &gen, Distribution &d, const double alpha)
   {
-    dealii::Tensor<2, DuctileContact::dim> Fp =
+    dealii::Tensor<2, DuctileContact::material_dim> Fp =
       perturbed_identity(gen, d, 0.01);
     Fp /= std::cbrt(determinant(Fp));
     DuctileContact::PlasticHistory h;

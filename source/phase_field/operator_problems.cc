@@ -26,15 +26,18 @@ namespace DuctileContact
 
   namespace
   {
-    /// s = cos(pi x) cos(pi y) cos(pi z) with derivatives.
+    /// s = cos(pi x) cos(pi y) cos(pi z) (without the z factor in 2-D)
+    /// with derivatives.
     class CosineSolution : public Function<dim>
     {
     public:
       double
       value(const Point<dim> &p, const unsigned int = 0) const override
       {
-        return std::cos(numbers::PI * p[0]) * std::cos(numbers::PI * p[1]) *
-               std::cos(numbers::PI * p[2]);
+        double v = 1.;
+        for (unsigned int d = 0; d < dim; ++d)
+          v *= std::cos(numbers::PI * p[d]);
+        return v;
       }
 
       Tensor<1, dim>
@@ -291,9 +294,10 @@ namespace DuctileContact
 
     const CosineSolution exact;
     const double         pi2 = numbers::PI * numbers::PI;
-    // L s = (mass + 3 pi^2 gradient + 9 pi^4 bilaplacian) s
+    // -Lap s = d pi^2 s, so L s = (mass + d pi^2 gradient + d^2 pi^4
+    // bilaplacian) s in d dimensions.
     const double factor =
-      c.mass + 3 * pi2 * c.gradient + 9 * pi2 * pi2 * c.bilaplacian;
+      c.mass + dim * pi2 * c.gradient + dim * dim * pi2 * pi2 * c.bilaplacian;
     FEFaceValues<dim> face_values(system.mapping,
                                   system.fe,
                                   system.face_quadrature,
