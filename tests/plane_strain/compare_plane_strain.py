@@ -7,7 +7,7 @@ The plane-strain discrete problem is the slab's restricted to fields that do
 not depend on z, and the slab's solution is such a field (the problem is
 symmetric in z), so the two runs must agree to the solvers' tolerance:
 every column of PLANE that SLAB has too, the slab's forces, energies and
-works divided by THICKNESS (2-D gives them per unit thickness), to 1e-6 of
+works and momenta divided by THICKNESS (2-D gives them per unit thickness), to 1e-6 of
 the column family's scale (tests/checkpoint/compare_statistics.py; the
 solver's work, the timings and the numbers of DoFs are not compared). Exits 1 when they do not, or
 when the steps differ.
@@ -23,7 +23,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
 from compare_statistics import (DEFAULT_TOLERANCE, NOT_COMPARED, TOLERANCE,
                                 family, read)
 
-PER_THICKNESS = {"force", "energy"}
+PER_THICKNESS = {"force", "energy", "momentum"}
 # Sizes of the discretisation: the slab has its third direction.
 SIZES = {"dofs", "cells", "active_cells"}
 
