@@ -3,6 +3,7 @@
 #include <ductile_contact/app/application.h>
 #include <ductile_contact/app/command_line.h>
 
+#include <cerrno>
 #include <cstring>
 #include <exception>
 #include <iostream>
