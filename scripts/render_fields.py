@@ -122,11 +122,17 @@ def render(reader, field, args, time, out):
     renderer.AddActor2D(title)
 
     camera = renderer.GetActiveCamera()
-    camera.SetViewUp(0, 0, 1)
-    camera.SetPosition(-1, -1.6, 1.1)
+    bounds = data.GetBounds()
+    if bounds[4] == bounds[5]:
+        # A plane-strain run (Dimension = 2): the x-y plane seen from above.
+        camera.SetViewUp(0, 1, 0)
+        camera.SetPosition(0, 0, 1)
+    else:
+        camera.SetViewUp(0, 0, 1)
+        camera.SetPosition(-1, -1.6, 1.1)
     camera.SetFocalPoint(0, 0, 0)
     renderer.ResetCamera()
-    camera.Zoom(1.3)
+    camera.Zoom(1.3 if bounds[4] != bounds[5] else 1.0)
 
     window = vtk.vtkRenderWindow()
     window.SetOffScreenRendering(1)
