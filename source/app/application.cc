@@ -5,6 +5,7 @@
 #include <ductile_contact/app/application.h>
 #include <ductile_contact/app/checkpoint.h>
 #include <ductile_contact/app/command_line.h>
+#include <ductile_contact/app/prm_writer.h>
 #include <ductile_contact/app/simulation.h>
 #include <ductile_contact/app/stop_request.h>
 #include <ductile_contact/app/version.h>
@@ -422,9 +423,7 @@ namespace DuctileContact
                          "from (there is none in '" +
                            dir + "/checkpoints')");
       std::ostringstream current;
-      parameters.prm.print_parameters(current,
-                                      ParameterHandler::PRM |
-                                        ParameterHandler::KeepDeclarationOrder);
+      write_prm(parameters.prm, current);
       accepted_changes =
         compare_parameters(checkpoints.read(checkpoint, "parameters.prm"),
                            current.str());
@@ -470,9 +469,7 @@ namespace DuctileContact
                     << overrides_as_prm(line.overrides);
             }
           std::ofstream all(dir + "/parameters.prm");
-          parameters.prm.print_parameters(
-            all,
-            ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
+          write_prm(parameters.prm, all);
         }
       return true;
     }
@@ -495,8 +492,13 @@ namespace DuctileContact
     if (line.print_parameters)
       {
         if (root)
-          parameters.prm.print_parameters(
-            std::cout, line.style | ParameterHandler::KeepDeclarationOrder);
+          {
+            if (line.style == ParameterHandler::PRM)
+              write_prm(parameters.prm, std::cout);
+            else
+              parameters.prm.print_parameters(
+                std::cout, line.style | ParameterHandler::KeepDeclarationOrder);
+          }
         return 0;
       }
     if (line.validate)

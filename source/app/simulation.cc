@@ -4,6 +4,7 @@
 #include <deal.II/hp/fe_values.h>
 
 #include <ductile_contact/app/application.h>
+#include <ductile_contact/app/prm_writer.h>
 #include <ductile_contact/app/simulation.h>
 #include <ductile_contact/app/step_controller.h>
 #include <ductile_contact/app/stop_request.h>
@@ -549,9 +550,7 @@ namespace DuctileContact
     increment = last_increment;
     force     = energy.last_force();
     std::ostringstream all;
-    parameters.prm.print_parameters(all,
-                                    ParameterHandler::PRM |
-                                      ParameterHandler::KeepDeclarationOrder);
+    write_prm(parameters.prm, all);
     std::vector<TrilinosWrappers::MPI::BlockVector>         dynamic_state;
     std::vector<const TrilinosWrappers::MPI::BlockVector *> vectors{&u_ghosted,
                                                                     &increment,
