@@ -50,6 +50,25 @@ namespace DuctileContact
 
 
 
+    /// The entry `Dimension`, read alone by input_dimension() and with
+    /// every other entry by RunParameters::declare().
+    void
+    declare_dimension(ParameterHandler &prm, unsigned int &dimension)
+    {
+      prm.add_parameter(
+        "Dimension",
+        dimension,
+        "Space dimension of the scene: 3, or 2 for plane strain (the mesh in "
+        "the x-y plane, u_z = 0; the material point stays three-dimensional, "
+        "with tau_33 and the out-of-plane plastic stretch; forces, energies "
+        "and works per unit thickness). Read before every "
+        "other entry: ductile-contact runs a 2-D input in its plane-strain "
+        "build, ductile-contact-2d.",
+        Patterns::Integer(2, 3));
+    }
+
+
+
     void
     check_unique(const std::vector<unsigned int> &ids, const std::string &entry)
     {
@@ -75,16 +94,7 @@ namespace DuctileContact
     boundary_ids         = boundary_id_list;
     contact_pair_numbers = pair_list;
 
-    prm.add_parameter(
-      "Dimension",
-      dimension,
-      "Space dimension of the scene: 3, or 2 for plane strain (the mesh in "
-      "the x-y plane, u_z = 0; the material point stays three-dimensional, "
-      "with tau_33 and the out-of-plane plastic stretch; forces, energies "
-      "and works per unit thickness). Read before every "
-      "other entry: ductile-contact runs a 2-D input in its plane-strain "
-      "build, ductile-contact-2d.",
-      Patterns::Integer(2, 3));
+    declare_dimension(prm, dimension);
     mesh.declare(prm);
 
     prm.enter_subsection("Finite elements");
@@ -229,7 +239,7 @@ namespace DuctileContact
         text << in.rdbuf() << "\n" << overrides_as_prm(overrides);
         unsigned int     dimension = dim;
         ParameterHandler prm;
-        prm.add_parameter("Dimension", dimension, "", Patterns::Integer(2, 3));
+        declare_dimension(prm, dimension);
         prm.parse_input_from_string(text.str(), "", true);
         return dimension;
       }
