@@ -6,7 +6,7 @@
 // scene's sourced w_c tears only at ~170 mm, benchmarks/paper_scene). It
 // checks the energy account through the tear, with the model's own terms:
 //  - |W_ext - Psi^e - Psi^p - D_p - g_c int gamma - D_f - D_c| <= 1 % of
-//    W_ext at every step from the third on (0.69 % at most, through the
+//    W_ext at every step from the third on (0.66 % at most, through the
 //    tear, which the scene's Maximum phase-field increment = 0.1 resolves
 //    in steps), and below 0.02 J in the first two, where the block starts to
 //    touch and W_ext is 0.2 and 0.9 J (0.0146 and 0.0128 J there); no
@@ -17,7 +17,11 @@
 //    takes, R_p, are >= 0 (to 1e-9 J), s stays in [0, 1] at the nodes and
 //    never decreases (s exceeds 1 between the nodes of the Lagrange field:
 //    its largest value at a quadrature point is printed);
-//  - the plate tears: the reaction falls below 5 % of its peak, max s = 1;
+//  - the plate tears: the set s >= 0.95 spans the plate's width (to
+//    within a cell of each edge) at the clamp, max s = 1, and the
+//    reaction falls below 10 % of its peak (after the tear at ~156 mm the
+//    flap's reaction decays slowly, to 2 % of the peak at 320 mm here and
+//    6.5 % with the Bernstein field);
 //  - the quantities of interest, 5 significant digits: peak and end
 //    reaction, W_ext, W_p, Psi^p, R_p, D_p, crack energy, friction.
 // D_p is reported, not bounded: here it is the backward Euler step's

@@ -15,6 +15,62 @@ namespace DuctileContact
 
   namespace
   {
+    /// The s DoFs of @p cell (the global indices of its phase-field
+    /// component), appended to @p dofs.
+    void
+    append_phase_field_dofs(const DoFHandler<dim>::cell_iterator &cell,
+                            std::vector<types::global_dof_index> &dofs)
+    {
+      std::vector<types::global_dof_index> indices(
+        cell->get_fe().n_dofs_per_cell());
+      cell->get_dof_indices(indices);
+      for (unsigned int i = 0; i < indices.size(); ++i)
+        if (cell->get_fe().system_to_component_index(i).first ==
+            Component::phase_field)
+          dofs.push_back(indices[i]);
+    }
+
+
+
+    /**
+     * The couplings of the C0IP face terms, added face by face as the
+     * assembly visits the faces (for_each_owned_interior_face(): a face
+     * with a finer neighbour from the finer side, periodic faces, only
+     * between cells of the same element), through @p constraints as the
+     * assembly distributes them. make_flux_sparsity_pattern() alone misses
+     * some of these entries at hanging faces.
+     */
+    void
+    add_crack_face_couplings(const Discretisation            &d,
+                             const AffineConstraints<double> &constraints,
+                             TrilinosWrappers::BlockSparsityPattern &sp)
+    {
+      std::vector<types::global_dof_index> dofs;
+      for (const auto &cell : d.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            Discretisation::fields(cell->active_fe_index()).phase_field)
+          for (const unsigned int f : cell->face_indices())
+            {
+              const bool periodic = cell->has_periodic_neighbor(f);
+              if (cell->at_boundary(f) && !periodic)
+                continue;
+              const auto neighbor =
+                periodic ? cell->periodic_neighbor(f) : cell->neighbor(f);
+              if (neighbor->has_children() ||
+                  neighbor->active_fe_index() != cell->active_fe_index())
+                continue;
+              dofs.clear();
+              append_phase_field_dofs(cell, dofs);
+              append_phase_field_dofs(neighbor, dofs);
+              constraints.add_entries_local_to_global(dofs, sp, false);
+            }
+    }
+  } // namespace
+
+
+
+  namespace
+  {
     /// Sweeps of FieldBound::identify_active_set() per Newton
     /// iteration; the coupled iteration goes on from the last set if the
     /// sweeps have not settled (a set that cycles).
@@ -99,6 +155,8 @@ namespace DuctileContact
                                              Utilities::MPI::this_mpi_process(
                                                comm));
       }
+    if (has_phase_field())
+      add_crack_face_couplings(discretisation, pattern_constraints, sp);
     // Constrained rows get a diagonal entry in distribute_local_to_global(),
     // also from face terms assembled on a ghost neighbour's DoFs, whose
     // diagonal the flux pattern of this rank does not hold.

@@ -70,11 +70,12 @@ namespace DuctileContact
                       const double                      h_inverse,
                       FullMatrix<double>               &face_matrix)
   {
-    const unsigned int  n        = fiv.n_current_interface_dofs();
-    const auto         &q_points = fiv.get_quadrature_points();
+    const unsigned int  n = fiv.n_current_interface_dofs();
     std::vector<double> jump_dn(n), mean_laplacian(n);
     const double        gamma = c.penalty * h_inverse;
-    for (unsigned int q = 0; q < q_points.size(); ++q)
+    // n_quadrature_points, not get_quadrature_points().size(): the points
+    // themselves are there only with update_quadrature_points.
+    for (unsigned int q = 0; q < fiv.n_quadrature_points; ++q)
       {
         const Tensor<1, dim> normal = fiv.normal(q);
         for (unsigned int i = 0; i < n; ++i)
