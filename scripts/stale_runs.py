@@ -18,6 +18,11 @@ feature is on, and every ctest output of the runs without it stayed as it
 was) is listed with its reason in benchmarks/neutral_commits and does not
 count.
 
+A commit whose change acts only on runs with a phase field (a crack
+model) is listed there as '<hash> only fracture: <reason>': it counts for
+the runs whose statistics have a phase-field column (fracture_energy,
+max_s, crack_area) and not for the others.
+
 A run that stays on purpose (a historical comparison) is listed in a file
 'historical' in its folder or in one of its parents: one line of reason.
 Those are listed apart.
@@ -69,23 +74,49 @@ def changes_code(h):
     return joined(removed) != joined(added)
 
 
+PHASE_FIELD_COLUMNS = {"fracture_energy", "max_s", "crack_area"}
+
+
 def neutral_commits():
-    """The commits of benchmarks/neutral_commits (full hashes)."""
+    """The commits of benchmarks/neutral_commits: {full hash: scope}, the
+    scope None (neutral for every run) or 'fracture' (acts only on runs
+    with a phase field)."""
     path = ROOT / "benchmarks" / "neutral_commits"
     if not path.exists():
-        return set()
-    listed = [line.split()[0] for line in path.read_text().splitlines()
-              if line.strip() and not line.startswith("#")]
-    return {git("rev-parse", h) for h in listed}
+        return {}
+    listed = {}
+    for line in path.read_text().splitlines():
+        if not line.strip() or line.startswith("#"):
+            continue
+        words = line.split()
+        scope = None
+        if len(words) > 2 and words[1] == "only":
+            scope = words[2].rstrip(":")
+            if scope != "fracture":
+                sys.exit(f"benchmarks/neutral_commits: unknown scope '{scope}' "
+                         f"in '{line}' (allowed: fracture)")
+        listed[git("rev-parse", words[0])] = scope
+    return listed
 
 
 def physics_commits():
     """Commits that changed the physics (not only its comments), newest
-    first, but those of benchmarks/neutral_commits: (hash, unix time)."""
+    first, but those neutral for every run in benchmarks/neutral_commits:
+    (hash, unix time, scope)."""
     out = git("log", "--format=%H %ct", "--", *PHYSICS)
     commits = [(h, int(t)) for h, t in (line.split() for line in out.splitlines())]
     neutral = neutral_commits()
-    return [(h, t) for h, t in commits if h not in neutral and changes_code(h)]
+    return [(h, t, neutral.get(h)) for h, t in commits
+            if (h not in neutral or neutral[h] is not None) and changes_code(h)]
+
+
+def has_phase_field(folder):
+    """Whether the run's statistics have a phase-field column."""
+    with open(folder / "statistics", errors="replace") as f:
+        for line in f:
+            if not line.startswith("#"):
+                return bool(PHASE_FIELD_COLUMNS & set(line.split()))
+    return True
 
 
 def run_commit(folder):
@@ -125,14 +156,17 @@ def main():
     parser.add_argument("--fail", action="store_true")
     args = parser.parse_args()
 
-    changes = physics_commits()
-    latest_hash, latest_time = changes[0]
+    all_changes = physics_commits()
+    latest_hash = all_changes[0][0]
     stale, historical = [], []
     for stats in sorted((ROOT / "benchmarks").rglob("statistics")):
         folder = stats.parent
+        cracking = has_phase_field(folder)
+        changes = [(h, ct) for h, ct, scope in all_changes
+                   if scope is None or (scope == "fracture" and cracking)]
         h, source = run_commit(folder)
         t = commit_time(h) if h else None
-        if t is not None and t >= latest_time:
+        if t is not None and t >= changes[0][1]:
             continue
         newer = sum(1 for _, ct in changes if t is None or ct > t)
         row = (str(folder.relative_to(ROOT)), (h or "-")[:10], source, newer)
@@ -147,8 +181,8 @@ def main():
             g = groups.setdefault(key, [0, set()])
             g[0] += 1
             g[1].add(r[1])
-        print(f"Runs older than the last change to the physics ({latest_hash[:10]}), "
-              f"from `scripts/stale_runs.py --markdown`:\n")
+        print(f"Runs older than the last change to the physics they ran (the last of "
+              f"all: {latest_hash[:10]}), from `scripts/stale_runs.py --markdown`:\n")
         print("| study | runs | their commits | historical because |")
         print("|---|---|---|---|")
         for (study, reason), (n, commits) in sorted(groups.items()):
