@@ -53,7 +53,10 @@ namespace DuctileContact
   crack_coefficients(const BodyParameters &body, const unsigned int degree)
   {
     C0IPCoefficients c = C0IPCoefficients::crack_functional(
-      body.crack.length_scale, body.crack.critical_energy_release_rate, degree);
+      body.crack.length_scale,
+      body.crack.critical_energy_release_rate,
+      degree,
+      body.crack.regularisation);
     if (body.crack.interior_penalty > 0.)
       c.penalty = body.crack.interior_penalty;
     return c;

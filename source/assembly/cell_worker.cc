@@ -603,6 +603,12 @@ namespace DuctileContact
     FEInterfaceValues<dim> &fiv =
       *scratch.interface_values[cell->active_fe_index()];
     cached.faces.clear();
+    // The second-order functional has no face terms.
+    if (body.crack.regularisation == Regularisation::second_order)
+      {
+        cached.computed = true;
+        return cached.faces;
+      }
     for_each_owned_interior_face(
       cell,
       fiv,

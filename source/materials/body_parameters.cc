@@ -150,8 +150,22 @@ namespace DuctileContact
                       Patterns::Double(0.));
     prm.add_parameter("Length scale",
                       crack.length_scale,
-                      "l_f of the crack functional (3) [m].",
+                      "l_f of the crack functional (3) [m]; with "
+                      "Regularisation = second order it is Miehe's l of "
+                      "the AT2 functional.",
                       Patterns::Double(0.));
+    add_option(prm,
+               "Regularisation",
+               crack.regularisation,
+               regularisation_names(),
+               "The crack density gamma (doc/model.md section 4): 'fourth "
+               "order' is the paper's (3), s^2/(4 l_f) + l_f/2 |grad s|^2 + "
+               "l_f^3/4 (Lap s)^2, discretised by C0 interior penalty "
+               "(cells and interior faces); 'second order' is AT2 (Miehe et "
+               "al. 2010), s^2/(2 l_f) + l_f/2 |grad s|^2, without face "
+               "terms (Interior penalty is not read). For the same "
+               "transition zone the second-order l_f is twice the "
+               "fourth-order one.");
     prm.add_parameter("Viscosity",
                       crack.viscosity,
                       "eta_f of (51) [J/m^3 times pseudo time]; 0 gives the "

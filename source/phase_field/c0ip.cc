@@ -14,15 +14,25 @@ namespace DuctileContact
 
 
   C0IPCoefficients
-  C0IPCoefficients::crack_functional(const double       l_f,
-                                     const double       g_c,
-                                     const unsigned int degree)
+  C0IPCoefficients::crack_functional(const double         l_f,
+                                     const double         g_c,
+                                     const unsigned int   degree,
+                                     const Regularisation order)
   {
     C0IPCoefficients c;
-    c.mass        = g_c / (2. * l_f);
-    c.gradient    = g_c * l_f;
-    c.bilaplacian = g_c * l_f * l_f * l_f / 2.;
-    c.penalty     = default_c0ip_penalty(degree);
+    c.gradient = g_c * l_f;
+    c.penalty  = default_c0ip_penalty(degree);
+    switch (order)
+      {
+      case Regularisation::fourth_order:
+        c.mass        = g_c / (2. * l_f);
+        c.bilaplacian = g_c * l_f * l_f * l_f / 2.;
+        break;
+      case Regularisation::second_order:
+        c.mass        = g_c / l_f;
+        c.bilaplacian = 0.;
+        break;
+      }
     return c;
   }
 
@@ -70,6 +80,8 @@ namespace DuctileContact
                       const double                      h_inverse,
                       FullMatrix<double>               &face_matrix)
   {
+    if (c.bilaplacian == 0.)
+      return;
     const unsigned int  n = fiv.n_current_interface_dofs();
     std::vector<double> jump_dn(n), mean_laplacian(n);
     const double        gamma = c.penalty * h_inverse;

@@ -21,6 +21,11 @@
 //  - the tip, the far end of s >= 0.95 at the quadrature points, lies
 //    where the profile falls to 0.95 at d = 0.3554 l_f beyond x = 0.5 mm,
 //    within h/2.
+// With Fracture/Regularisation = second order (AT2, the same l_f) and its
+// optimal profile s = exp(-d/l_f), the continuum value is
+// Gamma_l = 0.99995 a + (pi/4) l_f = 1.1570 a (doc/model.md section 4):
+//  - at h = l_f/2 the relaxed Gamma_l is within 1 % of it;
+//  - the interior penalty is not read: 60 gives the same Gamma_l (1e-12).
 // The compared output holds Gamma_l / a and the tip at 5 significant
 // digits. One MPI rank only.
 #include "../tests.h"
@@ -35,9 +40,12 @@ namespace
   constexpr double l_f = 1e-4, g_c = 2700, crack_length = 5e-4;
 
   /// Gamma_l / a of the relaxed initial crack and its tip x [m], on n x n
-  /// cells with interior penalty @p penalty (0: the default).
+  /// cells with interior penalty @p penalty (0: the default), for the
+  /// fourth-order functional or, with @p second_order, AT2.
   std::pair<double, double>
-  relaxed_crack(const unsigned int n, const double penalty)
+  relaxed_crack(const unsigned int n,
+                const double       penalty,
+                const bool         second_order = false)
   {
     const std::string  d = "(x <= 5e-4 ? abs(y - 5e-4) : "
                            "sqrt((x - 5e-4)^2 + (y - 5e-4)^2))";
@@ -59,9 +67,12 @@ namespace
       "    set Critical energy release rate = 2700\n"
       "    set Length scale = 1e-4\n"
       "    set Interior penalty = " +
-      penalty_text.str() + "\n    set Initial crack = (1 + " + d +
-      " / 1e-4) * exp(-" + d +
-      " / 1e-4)\n  end\nend\n"
+      penalty_text.str() + "\n    set Regularisation = " +
+      (second_order ? "second order" : "fourth order") +
+      "\n    set Initial crack = " +
+      (second_order ? "exp(-" + d + " / 1e-4)"
+                    : "(1 + " + d + " / 1e-4) * exp(-" + d + " / 1e-4)") +
+      "\n  end\nend\n"
       "subsection Load stepping\n  set End time = 0.05\n"
       "  set Time step = 0.05\nend\n"
       "subsection Linear solver\n  set Type = direct\nend\n"
@@ -69,7 +80,8 @@ namespace
     const auto table =
       Testing::run_scene(prm,
                          "initial_crack_energy_" + std::to_string(n) + "_" +
-                           std::to_string(static_cast<int>(penalty)));
+                           std::to_string(static_cast<int>(penalty)) +
+                           (second_order ? "_at2" : ""));
     return {table.at("fracture_energy")[0] / (g_c * crack_length),
             table.at("cracked_max_x")[0]};
   }
@@ -111,5 +123,17 @@ main(int argc, char **argv)
       << std::endl
       << "  above the default penalty's " << default_ratio << ": "
       << Testing::yes_no(stiff_ratio > default_ratio * (1. + 1e-3))
+      << std::endl;
+
+  const double at2       = 0.99995 + numbers::PI / 4. * l_f / crack_length;
+  const double at2_ratio = relaxed_crack(20, 0., true).first;
+  const double at2_stiff_ratio = relaxed_crack(20, 60., true).first;
+  out << "second order: continuum Gamma_l / a = " << at2
+      << "; h = l_f / 2: " << at2_ratio << std::endl
+      << "  within 1 % of the continuum value: "
+      << Testing::yes_no(std::abs(at2_ratio / at2 - 1.) <= 0.01) << std::endl
+      << "  interior penalty 60 not read (the same to 1e-12): "
+      << Testing::yes_no(std::abs(at2_stiff_ratio - at2_ratio) <=
+                         1e-12 * at2_ratio)
       << std::endl;
 }

@@ -6,6 +6,7 @@
 #include <ductile_contact/core/expression.h>
 #include <ductile_contact/materials/crack_driver.h>
 #include <ductile_contact/materials/plasticity.h>
+#include <ductile_contact/phase_field/regularisation.h>
 
 #include <string>
 
@@ -21,6 +22,8 @@ namespace DuctileContact
     double critical_energy_release_rate = 2.7e3;
     /// l_f: regularisation length of gamma (3) [m].
     double length_scale = 7.5e-6;
+    /// The crack density gamma: the paper's fourth-order (3) or AT2.
+    Regularisation regularisation = Regularisation::fourth_order;
     /// eta_f: viscosity of (51) [J/m^3 times pseudo time].
     double viscosity = 0.;
     /// a_g of the degradation g(s); 2 gives g = (1 - s)^2.

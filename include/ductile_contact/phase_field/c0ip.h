@@ -7,6 +7,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <ductile_contact/core/types.h>
+#include <ductile_contact/phase_field/regularisation.h>
 
 #include <functional>
 
@@ -25,7 +26,9 @@ namespace DuctileContact
    * Laplacian (not Hessian) form for FE_Q of degree p >= 2; no boundary-face
    * terms, so the natural conditions (10) hold weakly. For the crack
    * functional gamma: mass = 1/(2 l_f), gradient = l_f, bilaplacian =
-   * l_f^3/2 (times g_c), and int gamma dV = a(s, s)/2.
+   * l_f^3/2 (times g_c), and int gamma dV = a(s, s)/2. The second-order
+   * (AT2) functional is the same form with mass = 1/l_f, gradient = l_f
+   * and bilaplacian = 0, and then no face terms.
    */
   struct C0IPCoefficients
   {
@@ -35,11 +38,13 @@ namespace DuctileContact
     /// gamma_IP, see default_c0ip_penalty().
     double penalty = 9.;
 
-    /// The coefficients of g_c gamma for the length scale l_f.
+    /// The coefficients of g_c gamma for the length scale l_f and the
+    /// regularisation @p order.
     static C0IPCoefficients
-    crack_functional(const double       l_f,
-                     const double       g_c,
-                     const unsigned int degree);
+    crack_functional(const double         l_f,
+                     const double         g_c,
+                     const unsigned int   degree,
+                     const Regularisation order = Regularisation::fourth_order);
   };
 
   /**
@@ -71,7 +76,8 @@ namespace DuctileContact
    * Adds the face terms of a(s, v) on one interior face to @p face_matrix
    * (indexed by the interface DoFs of @p fiv, which needs gradients,
    * hessians, normals and JxW). @p h_inverse is the mean of 1/h of the two
-   * cells in the face-normal direction.
+   * cells in the face-normal direction. Adds nothing when
+   * c.bilaplacian = 0 (the second-order functional).
    */
   void
   add_c0ip_face_terms(const dealii::FEInterfaceValues<dim>     &fiv,

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <ductile_contact/core/option.h>
+
+namespace DuctileContact
+{
+  /**
+   * Fracture/Regularisation: the crack density gamma of the phase field
+   * (doc/model.md section 4):
+   *  - fourth order (the paper's (3)): gamma = s^2/(4 l_f)
+   *    + l_f/2 |grad s|^2 + l_f^3/4 (Lap s)^2, by C0IP with interior-face
+   *    terms;
+   *  - second order (AT2, Miehe et al. 2010): gamma = s^2/(2 l_f)
+   *    + l_f/2 |grad s|^2, an H^1 form without face terms; its l_f is
+   *    Miehe's l (twice the fourth-order l_f for the same transition zone).
+   */
+  enum class Regularisation
+  {
+    fourth_order,
+    second_order
+  };
+
+  inline const NameTable<Regularisation> &
+  regularisation_names()
+  {
+    static const NameTable<Regularisation> t{
+      {Regularisation::fourth_order, "fourth order"},
+      {Regularisation::second_order, "second order"}};
+    return t;
+  }
+} // namespace DuctileContact
