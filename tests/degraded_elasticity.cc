@@ -9,6 +9,7 @@
 //     (0, kappa) + (mu, 0) give the full law (psi, tau, P, A);
 //  3. diagonal F in tension and compression: tau, Psi^e, psi^+ against the
 //     closed form (in compression only the deviatoric part degrades);
+//     with Fracture/Energy split = none the whole law degrades in both;
 //  4. F with J > 1 and J < 1 (both branches of g_vol), s = 0, 0.3, 0.9,
 //     a_g = 2, 1, k = 1e-8, 1e-2: dP/dF, dP/ds, dpsi^+/dF against central
 //     differences; P = dPsi^e/dF and dPsi^e/ds = g_k'(s) psi^+ by central
@@ -236,6 +237,31 @@ main()
       }
     out << "tau, Psi^e, psi^+ equal the closed form (1e-12): "
         << Testing::yes_no(exact) << std::endl;
+
+    // Energy split = none: the whole law degrades at every J, and psi^+ is
+    // the whole undegraded energy.
+    bool no_split = true;
+    for (const auto &l : {std::array<double, 3>{{1.3, 1.0, 0.95}},
+                          std::array<double, 3>{{1.1, 0.9, 0.8}}})
+      {
+        Tensor<2, dim> F;
+        for (unsigned int i = 0; i < dim; ++i)
+          F[i][i] = l[i];
+        const MaterialResponse full = neo_hooke(F, mu, kappa, true);
+        const MaterialResponse r =
+          degraded_neo_hooke(F, s, mu, kappa, p, true, false);
+        no_split =
+          no_split && (r.tau - g * full.tau).norm() < 1e-12 &&
+          (r.P - g * full.P).norm() < 1e-12 &&
+          (r.dP_dF - g * full.dP_dF).norm() < 1e-12 &&
+          (r.dP_ds - degradation_derivative(s, p) * full.P).norm() < 1e-12 &&
+          std::abs(r.psi_elastic - g * full.psi_elastic) < 1e-12 &&
+          std::abs(r.psi_plus - full.psi_elastic) < 1e-12;
+      }
+    out << "without the split, in tension and compression: tau, P, dP/dF = "
+           "g_k times the undegraded law, dP/ds = g_k' P, psi^+ = Psi "
+           "(1e-12): "
+        << Testing::yes_no(no_split) << std::endl;
   }
 
   // 4. Derivatives against central differences; 5. against plastic_update().

@@ -28,6 +28,8 @@ writes the plane-strain mesh instead (`set Dimension = 2`): the same
 quadrilaterals in the x-y plane, physical surface 1 (the specimen) and
 physical curves 1 bottom, 2 top, 4 free edges and slit.
 
+BAND = HEIGHT/2 (with XEND = 1) gives the uniform mesh of h.
+
 Usage: make_sent.py H BAND OUTPUT.msh [XEND [HEIGHT [THICKNESS]]]
        (e.g. make_sent.py 0.0075 0.05 sent.msh)
 """
@@ -49,6 +51,8 @@ def graded(a, b, h_fine, fine_from_a):
     """Points from a to b, spacing h_fine at the fine end, growing by at
     most 1.25 per element towards the other end."""
     length = b - a
+    if length <= 1e-12:
+        return [a]
     sizes = []
     size, total = h_fine, 0.0
     while total + size < length - 1e-12:

@@ -304,17 +304,18 @@ namespace DuctileContact
       b.check();
     for (BoundaryCondition &bc : boundary_conditions)
       bc.check();
-    const bool phase_field =
+    const bool fourth_order =
       std::any_of(bodies.begin(), bodies.end(), [](const BodyParameters &b) {
-        return b.fracture;
+        return b.fracture &&
+               b.crack.regularisation == Regularisation::fourth_order;
       });
-    check_input(!phase_field || fe_degree >= 2,
+    check_input(!fourth_order || fe_degree >= 2,
                 "Finite elements/Polynomial degree",
                 std::to_string(fe_degree),
-                "it must be at least 2 when a body has a phase field (the "
-                "C0IP terms of "
-                "the fourth-order crack functional need second "
-                "derivatives inside the cells)");
+                "it must be at least 2 when a body has a fourth-order phase "
+                "field (the C0IP terms of the fourth-order crack functional "
+                "need second derivatives inside the cells; "
+                "Fracture/Regularisation = second order works with 1)");
     for (const BodyParameters &b : bodies)
       check_input(!b.fracture || b.crack.initial_crack.empty() ||
                     coupling.irreversibility != Irreversibility::history,

@@ -32,7 +32,9 @@ namespace DuctileContact
                                 body.bulk_modulus,
                                 {body.crack.degradation_a,
                                  body.crack.residual_stiffness},
-                                with_tangent);
+                                with_tangent,
+                                body.crack.split ==
+                                  EnergySplit::volumetric_deviatoric);
     // An intact elastic body: its whole energy would drive a crack.
     MaterialResponse r =
       neo_hooke(F, body.shear_modulus, body.bulk_modulus, with_tangent);

@@ -166,6 +166,18 @@ namespace DuctileContact
                "terms (Interior penalty is not read). For the same "
                "transition zone the second-order l_f is twice the "
                "fourth-order one.");
+    add_option(prm,
+               "Energy split",
+               crack.split,
+               energy_split_names(),
+               "Which elastic energy of a body without plasticity degrades "
+               "with g_k(s) and drives the crack (doc/model.md (17)): "
+               "'volumetric-deviatoric' degrades the deviatoric energy and "
+               "the volumetric one only in expansion (J > 1), so that a "
+               "crack cannot interpenetrate; 'none' degrades the whole "
+               "energy, in compression too (for comparisons with codes "
+               "without a split). Bodies with plasticity always use the "
+               "split.");
     prm.add_parameter("Viscosity",
                       crack.viscosity,
                       "eta_f of (51) [J/m^3 times pseudo time]; 0 gives the "
@@ -327,6 +339,12 @@ namespace DuctileContact
                     value(crack.volumetric_switch_width),
                     "it must be 0 for a body without plasticity (the smoothed "
                     "switch is implemented for the elastic-plastic law only)");
+        check_input(!plasticity ||
+                      crack.split == EnergySplit::volumetric_deviatoric,
+                    f + "Energy split",
+                    name_of(energy_split_names(), crack.split),
+                    "a body with plasticity uses the split "
+                    "'volumetric-deviatoric' of its elastic energy");
         check_input(plasticity || crack.driver == CrackDriverType::elastic,
                     f + "Crack driver",
                     name_of(crack_driver_names(), crack.driver),

@@ -11,7 +11,8 @@ namespace DuctileContact
                      const double                   mu,
                      const double                   kappa,
                      const DegradationParameters   &degradation,
-                     const bool                     with_tangent)
+                     const bool                     with_tangent,
+                     const bool                     split)
   {
     const double g  = degradation_value(s, degradation);
     const double dg = degradation_derivative(s, degradation);
@@ -20,9 +21,10 @@ namespace DuctileContact
     // neo_hooke() is linear in (mu, kappa) in psi, tau, P and A, so the
     // degraded law is the undegraded one with scaled moduli: one tangent
     // evaluation instead of one per part.
-    if (determinant(F) > 1.)
+    if (!split || determinant(F) > 1.)
       {
-        // Tension: g_vol = g_dev = g, psi^+ is the whole undegraded energy.
+        // Tension, or no split: g_vol = g_dev = g, psi^+ is the whole
+        // undegraded energy.
         const MaterialResponse full = neo_hooke(F, mu, kappa, with_tangent);
 
         r.J            = full.J;

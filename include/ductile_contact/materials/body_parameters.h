@@ -24,6 +24,8 @@ namespace DuctileContact
     double length_scale = 7.5e-6;
     /// The crack density gamma: the paper's fourth-order (3) or AT2.
     Regularisation regularisation = Regularisation::fourth_order;
+    /// The split (17) of an elastic body's energy, or none.
+    EnergySplit split = EnergySplit::volumetric_deviatoric;
     /// eta_f: viscosity of (51) [J/m^3 times pseudo time].
     double viscosity = 0.;
     /// a_g of the degradation g(s); 2 gives g = (1 - s)^2.

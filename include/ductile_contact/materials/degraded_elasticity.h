@@ -43,6 +43,8 @@ namespace DuctileContact
    * @param kappa  bulk modulus [Pa]
    * @param degradation  a_g and k of g_k(s)
    * @param with_tangent compute A (otherwise A is left zero)
+   * @param split  the split (17); false: g_vol = g_dev = g_k(s) at every J
+   *               and psi^+ the whole energy (Fracture/Energy split = none)
    */
   MaterialResponse
   degraded_neo_hooke(const dealii::Tensor<2, material_dim> &F,
@@ -50,5 +52,6 @@ namespace DuctileContact
                      const double                           mu,
                      const double                           kappa,
                      const DegradationParameters           &degradation,
-                     const bool                             with_tangent);
+                     const bool                             with_tangent,
+                     const bool                             split = true);
 } // namespace DuctileContact

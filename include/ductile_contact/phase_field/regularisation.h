@@ -20,6 +20,29 @@ namespace DuctileContact
     second_order
   };
 
+  /**
+   * Fracture/Energy split: which part of the elastic energy of an elastic
+   * body degrades and drives the crack (doc/model.md (17), (27)):
+   *  - volumetric-deviatoric: the deviatoric energy always, the volumetric
+   *    one only in expansion (J > 1), so a crack cannot interpenetrate;
+   *  - none: the whole energy, in compression too (the model of codes
+   *    without a split, e.g. pfm-cracks' notched tension).
+   */
+  enum class EnergySplit
+  {
+    volumetric_deviatoric,
+    none
+  };
+
+  inline const NameTable<EnergySplit> &
+  energy_split_names()
+  {
+    static const NameTable<EnergySplit> t{{EnergySplit::volumetric_deviatoric,
+                                           "volumetric-deviatoric"},
+                                          {EnergySplit::none, "none"}};
+    return t;
+  }
+
   inline const NameTable<Regularisation> &
   regularisation_names()
   {
