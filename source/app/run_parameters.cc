@@ -304,6 +304,10 @@ namespace DuctileContact
       b.check();
     for (BoundaryCondition &bc : boundary_conditions)
       bc.check();
+    const bool phase_field =
+      std::any_of(bodies.begin(), bodies.end(), [](const BodyParameters &b) {
+        return b.fracture;
+      });
     const bool fourth_order =
       std::any_of(bodies.begin(), bodies.end(), [](const BodyParameters &b) {
         return b.fracture &&
