@@ -11,6 +11,62 @@ sys.path.insert(0, os.path.join(here, "..", ".."))
 from runs_io import read_statistics  # noqa: E402
 
 
+def pfm_curve(name):
+    """(u [mm], load [N/mm]) per converged step of a pfm-cracks screen log."""
+    path = os.path.join(here, "runs", name, "screen.log")
+    if not os.path.isfile(path):
+        return [], []
+    u, load = [], []
+    for line in open(path):
+        m = re.match(r"No (\d+) time ([0-9.e+-]+) .*Load y: ([0-9.e+-]+)", line)
+        if m:
+            u.append(float(m.group(2)))
+            load.append(float(m.group(3)))
+    return u, load
+
+
+def pfm_energy_peak(name):
+    """The largest dW/du of a pfm-cracks run, W = its bulk plus crack
+    energy per step (the reaction that its energies imply): (u at the
+    middle of the step [mm], dW/du [N/mm])."""
+    path = os.path.join(here, "runs", name, "screen.log")
+    if not os.path.isfile(path):
+        return None
+    u_old, w_old, best = 0.0, 0.0, None
+    for line in open(path):
+        m = re.match(r"No \d+ time ([0-9.e+-]+) bulk energy: ([0-9.e+-]+) "
+                     r"crack energy: ([0-9.e+-]+)", line)
+        if not m:
+            continue
+        u, w = float(m.group(1)), float(m.group(2)) + float(m.group(3))
+        if u > u_old:
+            f = (w - w_old) / (u - u_old)
+            if best is None or f > best[1]:
+                best = (0.5 * (u + u_old), f)
+        u_old, w_old = u, w
+    return best
+
+
+def pfm_energy_curve(name):
+    """(u [mm], dW/du [N/mm]) per step of a pfm-cracks run, at the middle
+    of each step."""
+    path = os.path.join(here, "runs", name, "screen.log")
+    us, fs, u_old, w_old = [], [], 0.0, 0.0
+    if not os.path.isfile(path):
+        return us, fs
+    for line in open(path):
+        m = re.match(r"No \d+ time ([0-9.e+-]+) bulk energy: ([0-9.e+-]+) "
+                     r"crack energy: ([0-9.e+-]+)", line)
+        if not m:
+            continue
+        u, w = float(m.group(1)), float(m.group(2)) + float(m.group(3))
+        if u > u_old:
+            us.append(0.5 * (u + u_old))
+            fs.append((w - w_old) / (u - u_old))
+        u_old, w_old = u, w
+    return us, fs
+
+
 def pfm_run(name):
     """Peak and the cost up to it from a pfm-cracks screen log."""
     path = os.path.join(here, "runs", name, "screen.log")
@@ -67,6 +123,92 @@ def our_run(name):
                 wall=rows[k]["wall_time"])
 
 
+def same_model_run(level):
+    """Our run of prm/sent_pfm_2d.prm on pfm-cracks' level-L mesh
+    (same_model.sh): the peak, the cost up to it, the force curve."""
+    path = os.path.join(here, "runs", f"ours-at2-g{level}", "statistics")
+    if not os.path.isfile(path):
+        return None
+    rows = read_statistics(path)
+    # Plane strain: F2_y per unit thickness [N/m] -> N/mm.
+    load = [r["F2_y"] * 1e-3 for r in rows]
+    u = [r["u2_y"] * 1e3 for r in rows]
+    k = max(range(len(rows)), key=lambda n: load[n])
+    screen = open(os.path.join(os.path.dirname(path), "screen.txt")).read()
+    dofs = re.search(r"DoFs: (\d+)", screen)
+    end = "Total wallclock" in screen and "exit code" not in screen.lower()
+    return dict(load=load[k], u=u[k], dofs=int(dofs.group(1)) if dofs else 0,
+                u_end=u[-1], reached_end=abs(rows[-1]["time"] - 89.) < 1e-9,
+                newton=sum(r["newton_iterations"] for r in rows[1:k + 1]),
+                wall=rows[k]["wall_time"], total=rows[-1]["wall_time"],
+                curve=(u, load))
+
+
+def same_model_table():
+    """Lines of the same-model comparison and its plot."""
+    lines = ["", "## The same model (same_model.sh)", "",
+             "pfm-cracks' runs g4, g5, g6 against ours with prm/sent_pfm_2d.prm "
+             "(2-D, AT2 with l_f = eps = 0.0441942 mm, no split, Q1, the same "
+             "89 load steps) on its uniform meshes of the same levels; "
+             "pfm-cracks linear elastic with the phase field extrapolated in "
+             "the displacement equation, ours neo-Hooke, monolithic. "
+             "One rank each.", "",
+             "| level (h) | unknowns | pfm-cracks Load y peak | at u | "
+             "pfm-cracks dW/du peak | at u | ours peak | at u | ours / "
+             "pfm-cracks dW/du - 1 | pfm-cracks Newton its / wall to the peak | "
+             "ours Newton its / wall to the peak | ours: run ends at u |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    curves = []
+    for level in (4, 5, 6):
+        p, o = pfm_run(f"g{level}"), same_model_run(level)
+        if not o:
+            continue
+        h = 0.5 / 2**level
+        e = pfm_energy_peak(f"g{level}")
+        if p and e:
+            pk = p["peak"]
+            pfm = (f"{pk['load']:.1f} N/mm | {pk['u']:.5f} mm | "
+                   f"{e[1]:.1f} N/mm | {e[0]:.5f} mm",
+                   f"{o['load'] / e[1] - 1:+.2%}",
+                   f"{pk['newton']} / {pk['wall']:.0f} s")
+        else:
+            pfm = ("- | - | - | -", "-", "-")
+        end = ("89 steps" if o["reached_end"] else
+               f"{o['u_end']:.5f} mm (gave up)")
+        lines.append(f"| {level} ({h:.5g} mm) | {o['dofs']} | {pfm[0]} | "
+                     f"{o['load']:.1f} N/mm | {o['u']:.5f} mm | {pfm[1]} | "
+                     f"{pfm[2]} | {o['newton']:.0f} / {o['wall']:.0f} s | "
+                     f"{end} |")
+        curves.append((level, pfm_curve(f"g{level}"), o["curve"],
+                       pfm_energy_curve(f"g{level}")))
+    if curves:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+        for ax, (x0, x1, y0, y1) in zip(axes, [(0, 0.0063, 0, 850),
+                                              (0.0052, 0.0062, 540, 820)]):
+            for level, (pu, pl), (ou, ol), (eu, el) in curves:
+                line, = ax.plot(ou, ol, label=f"ours, level {level}")
+                if pu:
+                    ax.plot(pu, pl, "--", color=line.get_color(),
+                            label=f"pfm-cracks Load y, level {level}")
+                    ax.plot(eu, el, ":", color=line.get_color(),
+                            label=f"pfm-cracks dW/du, level {level}")
+            ax.set_xlim(x0, x1)
+            ax.set_ylim(y0, y1)
+            ax.set_xlabel("top displacement u [mm]")
+            ax.set_ylabel("load [N/mm]")
+            ax.grid(alpha=0.3)
+        axes[0].set_title("Notched tension, AT2, no split, Q1 (same model)")
+        axes[1].set_title("near the peak (after it the crack runs unstably)")
+        axes[1].legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(os.path.join(here, "same_model.png"), dpi=120)
+        lines += ["", "![force curves](same_model.png)"]
+    return lines
+
+
 def main():
     lines = ["# pfm-cracks and ductile-contact: adaptive notched tension "
              "(generated by report.py)", "",
@@ -100,6 +242,7 @@ def main():
             f"{r['dofs']:.0f} | {r['load']:.1f} N/mm | "
             f"{r['u']:.5f} mm | {r['refinements']:.0f} | {r['newton']:.0f} | "
             f"{r['wall']:.0f} s | - |")
+    lines += same_model_table()
     out = "\n".join(lines) + "\n"
     open(os.path.join(here, "results.md"), "w").write(out)
     print(out)

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# pfm-cracks' notched tension with our model matched to its own
+# (prm/sent_pfm_2d.prm: plane strain, second-order phase field with
+# l_f = its eps = 0.0441942 mm, no energy split, Q1, its 89 load steps) on
+# its uniform meshes of levels 4, 5 and 6 (h = 0.5 mm / 2^L; its runs g4,
+# g5 and g6 of run.sh are uniform at these levels up to their peaks), one
+# run at a time on one rank, beside nothing else. report.py puts the peaks
+# and the costs next to pfm-cracks' and draws the force curves
+# (same_model.png).
+# Usage: benchmarks/adaptive_refinement/pfm_cracks/same_model.sh [4 5 6]
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/../../../scripts/env.sh"
+require_build
+levels=("$@")
+((${#levels[@]})) || levels=(4 5 6)
+
+for level in "${levels[@]}"; do
+  dir=$here/runs/ours-at2-g$level
+  if run_finished "$dir"; then
+    echo "== ours-at2-g$level (done)"
+    continue
+  fi
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  h=$(python3 -c "print(0.5 / 2**$level)")
+  python3 "$project_root/prm/meshes/make_sent.py" "$h" 0.5 "$dir/mesh.msh" 1.0 1.0 0
+  { cat "$project_root/prm/sent_pfm_2d.prm"
+    printf 'subsection Mesh\n  subsection Gmsh\n    set File name = %s\n  end\nend\n' "$dir/mesh.msh"
+    printf 'subsection Output\n  set Directory = %s\nend\n' "$dir"
+  } > "$dir/scene.prm"
+  echo "== ours-at2-g$level ($(date +%H:%M))"
+  run_scene 1 "$dir"
+  rm -f "$dir/mesh.msh"
+done
+/usr/bin/python3 "$here/report.py"
