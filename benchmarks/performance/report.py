@@ -56,6 +56,10 @@ quantities = {
                       "purpose from 14.9546, the value of benchmarks/"
                       "plasticity/ductile_notch/runs/h0.05-delta1e-3 computed "
                       "before the fix"),
+    "sent_pfm_2d": ("peak F2_y [N/m]", largest("F2_y"), 611260., 1e-3,
+                    "benchmarks/adaptive_refinement/pfm_cracks/runs/"
+                    "ours-at2-g4 (611.26 N/mm; pfm-cracks' energies give "
+                    "611.9)"),
     "sent_coarse": ("F_max = max |F2_y| [N]", largest("F2_y"), 13.0138, 1e-3,
                     "0.52055 kN/mm x 0.025 mm, benchmarks/phase_field/"
                     "sent_scene"),

@@ -42,6 +42,7 @@ declare -A variants=(
   [ironing]="default output relative direct"
   [ductile_notch]="default output relative direct best"
   [ductile_notch_2d]="default output"
+  [sent_pfm_2d]="default output"
   [sent_coarse]="default output relative constant direct monotone linear"
   [bar_impact]="default output"
 )
@@ -57,7 +58,8 @@ declare -A settings=(
   [best]="subsection Load stepping;  set Predictor = best linear;end"
 )
 order=(box_compression gmsh_distorted_cube necking_bar two_bodies two_bodies_no_contact
-       block_on_plate hertz_sphere ironing ductile_notch ductile_notch_2d sent_coarse
+       block_on_plate hertz_sphere ironing ductile_notch ductile_notch_2d sent_pfm_2d
+       sent_coarse
        bar_impact)
 
 jobs=("$@")
