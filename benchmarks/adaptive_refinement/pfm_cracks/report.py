@@ -123,10 +123,11 @@ def our_run(name):
                 wall=rows[k]["wall_time"])
 
 
-def same_model_run(level):
+def same_model_run(level, kind="at2"):
     """Our run of prm/sent_pfm_2d.prm on pfm-cracks' level-L mesh
-    (same_model.sh): the peak, the cost up to it, the force curve."""
-    path = os.path.join(here, "runs", f"ours-at2-g{level}", "statistics")
+    (same_model.sh; kind at2, or at4 for the fourth-order phase field): the
+    peak, the cost up to it, the force curve."""
+    path = os.path.join(here, "runs", f"ours-{kind}-g{level}", "statistics")
     if not os.path.isfile(path):
         return None
     rows = read_statistics(path)
@@ -181,6 +182,23 @@ def same_model_table():
                      f"{end} |")
         curves.append((level, pfm_curve(f"g{level}"), o["curve"],
                        pfm_energy_curve(f"g{level}")))
+    fourth = [(level, same_model_run(level, "at4"), same_model_run(level))
+              for level in (4, 5)]
+    fourth = [f for f in fourth if f[1]]
+    if fourth:
+        lines += ["", "The same scene with our fourth-order phase field beside it "
+                  "(l_f = eps/2 = 0.0220971 mm, the same transition zone, Q2, "
+                  "the same meshes):", "",
+                  "| level | unknowns | fourth-order peak | at u | against "
+                  "AT2 on the level | Newton its / wall to the peak | run ends at u |",
+                  "|---|---|---|---|---|---|---|"]
+        for level, o, a in fourth:
+            versus = f"{o['load'] / a['load'] - 1:+.1%}" if a else "-"
+            end = ("89 steps" if o["reached_end"] else
+                   f"{o['u_end']:.5f} mm (gave up)")
+            lines.append(f"| {level} | {o['dofs']} | {o['load']:.1f} N/mm | "
+                         f"{o['u']:.5f} mm | {versus} | {o['newton']:.0f} / "
+                         f"{o['wall']:.0f} s | {end} |")
     if curves:
         import matplotlib
         matplotlib.use("Agg")
@@ -195,6 +213,8 @@ def same_model_table():
                             label=f"pfm-cracks Load y, level {level}")
                     ax.plot(eu, el, ":", color=line.get_color(),
                             label=f"pfm-cracks dW/du, level {level}")
+            for level, o, _ in fourth:
+                ax.plot(*o["curve"], "-.", label=f"ours fourth order, level {level}")
             ax.set_xlim(x0, x1)
             ax.set_ylim(y0, y1)
             ax.set_xlabel("top displacement u [mm]")

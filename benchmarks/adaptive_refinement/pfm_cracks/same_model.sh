@@ -7,18 +7,33 @@
 # run at a time on one rank, beside nothing else. report.py puts the peaks
 # and the costs next to pfm-cracks' and draws the force curves
 # (same_model.png).
-# Usage: benchmarks/adaptive_refinement/pfm_cracks/same_model.sh [4 5 6]
+# Then the same scene with our fourth-order phase field beside it
+# (ours-at4-gL: l_f = eps/2 = 0.0220971 mm, the same transition zone, Q2,
+# the C0IP default penalty) on levels 4 and 5.
+# Usage: benchmarks/adaptive_refinement/pfm_cracks/same_model.sh [RUN...]
+#   RUN: at2-g4 at2-g5 at2-g6 at4-g4 at4-g5 (default: all)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 require_build
-levels=("$@")
-((${#levels[@]})) || levels=(4 5 6)
+runs=("$@")
+((${#runs[@]})) || runs=(at2-g4 at2-g5 at2-g6 at4-g4 at4-g5)
 
-for level in "${levels[@]}"; do
-  dir=$here/runs/ours-at2-g$level
+fourth_order='subsection Finite elements
+  set Polynomial degree = 2
+end
+subsection Body 1
+  subsection Fracture
+    set Regularisation = fourth order
+    set Length scale   = 2.20971e-5
+  end
+end'
+
+for run in "${runs[@]}"; do
+  dir=$here/runs/ours-$run
+  level=${run#*-g}
   if run_finished "$dir"; then
-    echo "== ours-at2-g$level (done)"
+    echo "== ours-$run (done)"
     continue
   fi
   rm -rf "$dir"
@@ -28,8 +43,9 @@ for level in "${levels[@]}"; do
   { cat "$project_root/prm/sent_pfm_2d.prm"
     printf 'subsection Mesh\n  subsection Gmsh\n    set File name = %s\n  end\nend\n' "$dir/mesh.msh"
     printf 'subsection Output\n  set Directory = %s\nend\n' "$dir"
+    [[ $run == at4-* ]] && echo "$fourth_order"
   } > "$dir/scene.prm"
-  echo "== ours-at2-g$level ($(date +%H:%M))"
+  echo "== ours-$run ($(date +%H:%M))"
   run_scene 1 "$dir"
   rm -f "$dir/mesh.msh"
 done
