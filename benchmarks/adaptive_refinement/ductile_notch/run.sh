@@ -25,7 +25,7 @@ run() { # name mesh [extra entries]
   { cat "$project_root/prm/ductile_notch.prm" \
         "$project_root/tests/ductile_notch_coarse.prm"
     printf '%s\n' "subsection Mesh" "  subsection Gmsh" "    set File name = $2" \
-      "  end" "end" "subsection Load stepping" "  set End time = 0.68" "end" \
+      "  end" "end" "subsection Load stepping" "  set End time = 0.8" "end" \
       "subsection Output" "  set Directory = $dir" "  set Interval = 0" "end"
     printf '%s\n' "${@:3}"
   } > "$dir/scene.prm"
