@@ -49,7 +49,7 @@ def main():
     lines = ["# Irreversibility: the history field of psi+, the bound s >= s_n, both",
              "",
              "Coarse ductile notched plate (the ctest ductile_notch's scene, h = l_f = 0.1 mm),",
-             "pulled to 22.8 um. F per unit thickness; min s change: smallest s_{n+1} - s_n",
+             "pulled to 24 um. F per unit thickness; min s change: smallest s_{n+1} - s_n",
              "over the phase-field DoFs and all steps; crack energy at the end / (g_c x",
              "ligament x thickness); residual: largest |energy residual| / W_ext.",
              "",

@@ -4,7 +4,7 @@
 # (Coupling/Irreversibility = history | bound | history and bound, the
 # default), on the coarse copy of the ductile notched plate (the ctest
 # ductile_notch's scene, tests/ductile_notch_coarse.prm: h = l_f = 0.1 mm,
-# l_p = 0.2 mm, g_c = 2800 J/m^2), pulled to 22.8 um, past the
+# l_p = 0.2 mm, g_c = 2800 J/m^2), pulled to 24 um, past the
 # separation, where the history field alone lets the broken band relax.
 # report.py: smallest s change, Newton iterations, cut-backs, run time and
 # the differences of the force curves.
@@ -36,7 +36,7 @@ subsection Coupling
   set Irreversibility = $mode
 end
 subsection Load stepping
-  set End time = 0.76
+  set End time = 0.8
 end
 subsection Output
   set Directory = $dir
