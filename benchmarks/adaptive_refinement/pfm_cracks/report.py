@@ -29,22 +29,11 @@ def pfm_energy_peak(name):
     """The largest dW/du of a pfm-cracks run, W = its bulk plus crack
     energy per step (the reaction that its energies imply): (u at the
     middle of the step [mm], dW/du [N/mm])."""
-    path = os.path.join(here, "runs", name, "screen.log")
-    if not os.path.isfile(path):
+    us, fs = pfm_energy_curve(name)
+    if not fs:
         return None
-    u_old, w_old, best = 0.0, 0.0, None
-    for line in open(path):
-        m = re.match(r"No \d+ time ([0-9.e+-]+) bulk energy: ([0-9.e+-]+) "
-                     r"crack energy: ([0-9.e+-]+)", line)
-        if not m:
-            continue
-        u, w = float(m.group(1)), float(m.group(2)) + float(m.group(3))
-        if u > u_old:
-            f = (w - w_old) / (u - u_old)
-            if best is None or f > best[1]:
-                best = (0.5 * (u + u_old), f)
-        u_old, w_old = u, w
-    return best
+    n = max(range(len(fs)), key=lambda m: fs[m])
+    return us[n], fs[n]
 
 
 def pfm_energy_curve(name):
