@@ -67,17 +67,6 @@ subsection Output
 end
 )";
   }
-
-  /// Largest F1_x and the s where it occurs.
-  std::pair<double, double>
-  peak(const Testing::Table &t)
-  {
-    std::pair<double, double> p{0., 0.};
-    for (unsigned int n = 0; n < t.at("F1_x").size(); ++n)
-      if (t.at("F1_x")[n] > p.first)
-        p = {t.at("F1_x")[n], t.at("max_s")[n]};
-    return p;
-  }
 } // namespace
 
 int
@@ -93,7 +82,7 @@ main(int argc, char **argv)
     Testing::run_scene(bar_prm("monolithic", 0., pull, 0.025), "bar_mono");
   const auto stag =
     Testing::run_scene(bar_prm("staggered", 0., pull, 0.025), "bar_stag");
-  const auto [peak_mono, s_mono] = peak(mono);
+  const auto [peak_mono, s_mono] = Testing::peak(mono, "F1_x", "max_s");
   out << "peak stress = sigma_c (0.2 %): "
       << Testing::yes_no(std::abs(peak_mono - sigma_c) < 2e-3 * sigma_c)
       << std::endl
@@ -155,8 +144,11 @@ main(int argc, char **argv)
   const auto viscous =
     Testing::run_scene(bar_prm("monolithic", 1e-7, pull, 0.025), "bar_visc");
   out << "eta_f > 0 raises the peak: "
-      << Testing::yes_no(peak(viscous).first > peak_mono) << std::endl;
-  std::cout << "viscous peak / sigma_c " << peak(viscous).first / sigma_c
+      << Testing::yes_no(Testing::peak(viscous, "F1_x", "max_s").first >
+                         peak_mono)
+      << std::endl;
+  std::cout << "viscous peak / sigma_c "
+            << Testing::peak(viscous, "F1_x", "max_s").first / sigma_c
             << std::endl;
 
   // Rung 9: load past the peak, unload to 20 %, reload beyond.

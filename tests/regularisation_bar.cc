@@ -52,17 +52,6 @@ end
 )";
   }
 
-  /// Largest F1_x and the s where it occurs.
-  std::pair<double, double>
-  peak(const Testing::Table &t)
-  {
-    std::pair<double, double> p{0., 0.};
-    for (unsigned int n = 0; n < t.at("F1_x").size(); ++n)
-      if (t.at("F1_x")[n] > p.first)
-        p = {t.at("F1_x")[n], t.at("max_s")[n]};
-    return p;
-  }
-
   /// |crack energy / (g_c s^2 m) - 1| at the last step, s the largest
   /// phase field and m the functional's mass coefficient (per g_c).
   double
@@ -83,8 +72,8 @@ main(int argc, char **argv)
 
   const auto second = Testing::run_scene(bar_prm("second order"), "bar_at2");
   const auto fourth = Testing::run_scene(bar_prm("fourth order"), "bar_at4");
-  const auto [peak_2, s_2] = peak(second);
-  const double peak_4      = peak(fourth).first;
+  const auto [peak_2, s_2] = Testing::peak(second, "F1_x", "max_s");
+  const double peak_4      = Testing::peak(fourth, "F1_x", "max_s").first;
   out << "second order: peak " << peak_2 << " = sigma_c " << sigma_c
       << " (0.2 %), s there " << s_2 << " = 1/4 (0.02): "
       << Testing::yes_no(std::abs(peak_2 / sigma_c - 1.) < 2e-3 &&

@@ -87,6 +87,18 @@ namespace Testing
     return text.str();
   }
 
+  /// The largest positive value of column @p force of @p t and the value
+  /// of column @p at in the same row (0, 0 when no value is positive).
+  inline std::pair<double, double>
+  peak(const Table &t, const std::string &force, const std::string &at)
+  {
+    std::pair<double, double> p{0., 0.};
+    for (unsigned int n = 0; n < t.at(force).size(); ++n)
+      if (t.at(force)[n] > p.first)
+        p = {t.at(force)[n], t.at(at)[n]};
+    return p;
+  }
+
   /// Text of the shipped scene prm/@p name (tests append overrides).
   inline std::string
   shipped_scene(const std::string &name)
