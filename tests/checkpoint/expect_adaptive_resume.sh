@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Usage: expect_adaptive_resume.sh MPIEXEC EXECUTABLE SCENE.prm MESH.msh (in
 # a scratch folder)
-# Issue #28 item 3: a checkpoint holds an adapted mesh. Coarse notched
+# A checkpoint holds an adapted mesh. Coarse notched
 # tension (SCENE.prm = tests/sent_adaptive.prm on MESH.msh, h = 2 l_f,
 # refined where s > 0.05 up to level 1), 9 steps; the mesh is refined in
 # steps 4, 7 and 8. Passes when

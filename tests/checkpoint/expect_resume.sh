@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Usage: expect_resume.sh MPIEXEC EXECUTABLE SCENE.prm (in a scratch folder)
-# Issue #26 items 1-4 on the coarse copy of the paper's scene (SCENE.prm:
+# Checkpoint and resume on the coarse copy of the paper's scene (SCENE.prm:
 # gradient plasticity, the phase field and frictional contact in one run),
 # 16 steps of 0.6 mm (the plate yields from step 9, s grows, the block
 # slides). Passes when every run below gives the statistics of

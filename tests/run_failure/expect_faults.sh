@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Usage: expect_faults.sh MPIEXEC NP EXECUTABLE (run in a scratch folder)
-# Issue #26 item 5: numerical faults are caught where they happen and
+# Numerical faults are caught where they happen and
 # named; the step is cut back; when the fault persists down to the minimum
 # step the run stops with exit code 2 and readable results:
 #  - inverted.prm: an inverted element (J <= 0), named with J, the cell's
