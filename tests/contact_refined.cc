@@ -39,7 +39,8 @@
 //    mesh from the start, step by step: that checks the contact state the
 //    refinement carries (the positions of the last accepted step that the
 //    slip increments start from).
-// On 1 and 2 MPI ranks with identical output.
+// Run on 2 MPI ranks (1 rank gives the same output; the suite runs only
+// the 2-rank case, the costlier check).
 #include "tests.h"
 
 #include <cmath>

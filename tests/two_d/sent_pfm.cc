@@ -14,7 +14,8 @@
 //  - s never decreases at any DoF (Irreversibility = bound; to the Newton
 //    tolerance 1e-8, as in two_d/ductile_notch).
 // The compared output holds the peak, where it is, and the energies at
-// 5.9e-3 mm at 5 significant digits; 1 and 2 MPI ranks give the same.
+// 5.9e-3 mm at 5 significant digits; run on 2 MPI ranks (1 rank gives the
+// same output).
 #include "../tests.h"
 
 #include <algorithm>

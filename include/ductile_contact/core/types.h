@@ -9,20 +9,22 @@
  * once with 2 (plane strain), and the program picks the build that the
  * input's `Dimension` names (source/main.cc). This keeps every heavy
  * deal.II template instantiated once per build, which matters for compile
- * times on small machines.
+ * times on small machines. The sources that do not depend on the dimension
+ * (parameters, the linear algebra, the statistics table) are compiled once,
+ * without DUCTILE_CONTACT_DIM: there `dim` and the component layout are not
+ * declared, so that a use of either in such a source fails to compile
+ * (CMakeLists.txt, ductile_contact_common).
  */
 
 #include <deal.II/base/types.h>
 
-#ifndef DUCTILE_CONTACT_DIM
-#error "DUCTILE_CONTACT_DIM (2 or 3) must be defined by the build"
-#endif
-
 namespace DuctileContact
 {
+#ifdef DUCTILE_CONTACT_DIM
   /// Space dimension of every mesh of this build: 3, or 2 in plane strain.
   constexpr unsigned int dim = DUCTILE_CONTACT_DIM;
   static_assert(dim == 2 || dim == 3, "DUCTILE_CONTACT_DIM must be 2 or 3");
+#endif
 
   /**
    * Dimension of the material point, 3 in every build: in plane strain the
@@ -45,6 +47,7 @@ namespace DuctileContact
     constexpr unsigned int n_blocks     = 3;
   } // namespace Block
 
+#ifdef DUCTILE_CONTACT_DIM
   /// Vector components of the FE system: u_x, u_y (, u_z), alpha, s.
   namespace Component
   {
@@ -53,4 +56,5 @@ namespace DuctileContact
     constexpr unsigned int phase_field        = dim + 1;
     constexpr unsigned int n_components       = dim + 2;
   } // namespace Component
+#endif
 } // namespace DuctileContact
