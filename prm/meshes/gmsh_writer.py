@@ -34,7 +34,12 @@ def column_body(nodes, elements, xs, levels, zs, volume, faces):
     (bottom to top): nodes and hexahedra with volume tag `volume`, and the
     boundary quadrilaterals with the tags faces["z"] (both slab faces),
     faces["bottom"], faces["top"], faces["left"] (x = xs[0]) and
-    faces["right"] (x = xs[-1])."""
+    faces["right"] (x = xs[-1]). With zs = None the body is 2-D:
+    quadrilaterals (type 3) with boundary lines (type 1) of the same tags
+    (no "z")."""
+    if zs is None:
+        column_body_2d(nodes, elements, xs, levels, volume, faces)
+        return
     first = len(nodes) + 1
     nx, ny = len(xs), len(levels)
 
@@ -60,6 +65,32 @@ def column_body(nodes, elements, xs, levels, zs, volume, faces):
                 elements.append((3, faces["left"], [v[0], v[3], v[7], v[4]]))
             if i == nx - 2:
                 elements.append((3, faces["right"], [v[1], v[2], v[6], v[5]]))
+
+
+def column_body_2d(nodes, elements, xs, levels, volume, faces):
+    """column_body() in the plane (z = 0): quadrilaterals counter-clockwise
+    and their boundary lines."""
+    first = len(nodes) + 1
+    nx, ny = len(xs), len(levels)
+
+    def nid(i, j):
+        return first + i + nx * j
+
+    for j in range(ny):
+        for i in range(nx):
+            nodes.append((xs[i], levels[j](xs[i]), 0.0))
+    for j in range(ny - 1):
+        for i in range(nx - 1):
+            v = [nid(i, j), nid(i + 1, j), nid(i + 1, j + 1), nid(i, j + 1)]
+            elements.append((3, volume, v))
+            if j == 0:
+                elements.append((1, faces["bottom"], [v[0], v[1]]))
+            if j == ny - 2:
+                elements.append((1, faces["top"], [v[3], v[2]]))
+            if i == 0:
+                elements.append((1, faces["left"], [v[0], v[3]]))
+            if i == nx - 2:
+                elements.append((1, faces["right"], [v[1], v[2]]))
 
 
 def block_body(nodes, elements, xs, ys, levels, volume, faces):

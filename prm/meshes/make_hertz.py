@@ -16,8 +16,10 @@ Physical tags: surfaces 1 foundation bottom y = -H, 2 indenter top y = H,
 3 foundation top y = 0 (master), 4 indenter surface (slave), 5 the faces
 x = 0 of both bodies, 6 the slab faces z = 0 and z = h, 7 the faces x = W.
 
-Usage: make_hertz.py R A H_OVER_A W OUTPUT.msh
+Usage: make_hertz.py R A H_OVER_A W OUTPUT.msh [2d]
        (e.g. make_hertz.py 1 0.01 8 0.3 hertz.msh: h = a/8)
+With the last argument 2d the mesh is plane (Dimension = 2): quadrilaterals
+with boundary lines of the same tags (no 6).
 """
 import math
 import sys
@@ -29,12 +31,13 @@ a = float(sys.argv[2]) if len(sys.argv) > 2 else 0.01
 ratio = float(sys.argv[3]) if len(sys.argv) > 3 else 8
 W = float(sys.argv[4]) if len(sys.argv) > 4 else 0.3
 out = sys.argv[5] if len(sys.argv) > 5 else "hertz.msh"
+two_d = len(sys.argv) > 6 and sys.argv[6] == "2d"
 h = a / ratio
 H = W
 
 xs = graded(h, 3 * a, W, 1.25)
 ds = graded(h, 2 * a, H, 1.25)  # depth below / height above the contact point
-zs = [0.0, h]
+zs = None if two_d else [0.0, h]
 nodes, elements = [], []
 
 
@@ -54,10 +57,15 @@ def surface(x):
 
 body([(lambda x, d=d: surface(x) + d * (1 - surface(x) / H)) for d in ds], 2, 4, 2)
 
-write_gmsh(out,
-           [(2, 1, "foundation bottom"), (2, 2, "indenter top"), (2, 3, "foundation top"),
-            (2, 4, "indenter surface"), (2, 5, "symmetry"), (2, 6, "slab faces"),
-            (2, 7, "outer"), (3, 1, "foundation"), (3, 2, "indenter")],
-           nodes, elements)
-print(f"{out}: {len(xs) - 1} x {2 * (len(ds) - 1)} hexahedra (h = {h:g} m, "
+if two_d:
+    names = [(1, 1, "foundation bottom"), (1, 2, "indenter top"), (1, 3, "foundation top"),
+             (1, 4, "indenter surface"), (1, 5, "symmetry"), (1, 7, "outer"),
+             (2, 1, "foundation"), (2, 2, "indenter")]
+else:
+    names = [(2, 1, "foundation bottom"), (2, 2, "indenter top"), (2, 3, "foundation top"),
+             (2, 4, "indenter surface"), (2, 5, "symmetry"), (2, 6, "slab faces"),
+             (2, 7, "outer"), (3, 1, "foundation"), (3, 2, "indenter")]
+write_gmsh(out, names, nodes, elements)
+print(f"{out}: {len(xs) - 1} x {2 * (len(ds) - 1)} "
+      f"{'quadrilaterals' if two_d else 'hexahedra'} (h = {h:g} m, "
       f"R = {R}, a = {a}, W = H = {W})")

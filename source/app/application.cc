@@ -334,7 +334,7 @@ namespace DuctileContact
                   "Finite elements/Polynomial degree",
                   Utilities::to_string(parameters.fe_degree),
                   "2 in a scene with contact (the mortar contact works on "
-                  "quad9 faces)");
+                  "the faces of quadratic cells: quad9, line3)");
   }
 
 

@@ -293,12 +293,6 @@ namespace DuctileContact
                 "this program is the " + std::to_string(dim) +
                   "-D build; run 'ductile-contact', which hands the input "
                   "to the build of its dimension");
-    if (dim == 2 && !contact_pair_numbers.empty())
-      throw InputError("Contact/Pairs",
-                       std::to_string(contact_pair_numbers.front()) +
-                         (contact_pair_numbers.size() > 1 ? ", ..." : ""),
-                       "mortar contact is three-dimensional (quad9 faces); "
-                       "with Dimension = 2 a scene has no contact pairs");
     mesh.check();
     for (const BodyParameters &b : bodies)
       b.check();

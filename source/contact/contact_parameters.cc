@@ -72,7 +72,7 @@ namespace DuctileContact
       multiplier_basis,
       multiplier_basis_names(),
       "Basis Phi_j of the contact pressure on the slave faces: dual "
-      "(biorthogonal to the quad9 shape functions, Wohlmuth; the nodal "
+      "(biorthogonal to the face shape functions, Wohlmuth; the nodal "
       "pressures are point values of the pressure field) or standard "
       "(Phi_j = N_j; the nodal coefficients of quadratic faces oscillate "
       "between vertex and mid-side nodes where the pressure varies).");

@@ -268,9 +268,9 @@ namespace DuctileContact
             {
               std::ostringstream s;
               s << "contact pair " << pair.index + 1 << ": the master face at ("
-                << pair.master.current_face(c).position({0.5, 0.5})
+                << pair.master.current_face(c).position(ContactFace::centre())
                 << ") m came within reach of the slave face at ("
-                << pair.slave_faces[f].position({0.5, 0.5})
+                << pair.slave_faces[f].position(ContactFace::centre())
                 << ") m but is not among the candidates of the step "
                    "(search radius "
                 << pair.search_radius
@@ -572,12 +572,12 @@ namespace DuctileContact
           pair.linearised_pairs.push_back(records.size());
         records.push_back(f);
         records.push_back(c);
-        for (unsigned int i = 0; i < 9; ++i)
-          for (unsigned int k = 0; k < 9; ++k)
+        for (unsigned int i = 0; i < face_nodes; ++i)
+          for (unsigned int k = 0; k < face_nodes; ++k)
             if (weights == SlaveWeights::full || k == i)
               records.push_back(operators.D[i][k]);
-        for (unsigned int i = 0; i < 9; ++i)
-          for (unsigned int k = 0; k < 9; ++k)
+        for (unsigned int i = 0; i < face_nodes; ++i)
+          for (unsigned int k = 0; k < face_nodes; ++k)
             records.push_back(operators.M[i][k]);
       }
     return records;
@@ -589,10 +589,11 @@ namespace DuctileContact
   ContactProblem::add_operators(Pair                      &pair,
                                 const std::vector<double> &mine) const
   {
-    const MPI_Comm     comm = discretisation.dof_handler.get_communicator();
-    const unsigned int n_d =
-      pair.slave_weights() == SlaveWeights::full ? 81 : 9;
-    const std::size_t record = 2 + n_d + 81;
+    const MPI_Comm         comm = discretisation.dof_handler.get_communicator();
+    constexpr unsigned int n_full = face_nodes * face_nodes;
+    const unsigned int     n_d =
+      pair.slave_weights() == SlaveWeights::full ? n_full : face_nodes;
+    const std::size_t record = 2 + n_d + n_full;
     const auto        all    = Utilities::MPI::all_gather(comm, mine);
     std::size_t       before = 0;
     for (unsigned int r = 0; r < Utilities::MPI::this_mpi_process(comm); ++r)
@@ -606,16 +607,16 @@ namespace DuctileContact
           const unsigned int f = data[p], c = data[p + 1];
           pair.overlaps.emplace_back(f, c);
           const double *D = &data[p + 2], *M = D + n_d;
-          for (unsigned int i = 0; i < 9; ++i)
+          for (unsigned int i = 0; i < face_nodes; ++i)
             {
               const unsigned int j = slave.faces[f].nodes[i];
-              for (unsigned int k = 0; k < 9; ++k)
+              for (unsigned int k = 0; k < face_nodes; ++k)
                 {
-                  if (n_d == 81)
-                    pair.D[j][slave.faces[f].nodes[k]] += D[9 * i + k];
+                  if (n_d == n_full)
+                    pair.D[j][slave.faces[f].nodes[k]] += D[face_nodes * i + k];
                   else if (k == i)
                     pair.D[j][j] += D[i];
-                  pair.M[j][master.faces[c].nodes[k]] += M[9 * i + k];
+                  pair.M[j][master.faces[c].nodes[k]] += M[face_nodes * i + k];
                 }
             }
         }
@@ -641,9 +642,9 @@ namespace DuctileContact
     for (unsigned int f = 0; f < slave.faces.size(); ++f)
       {
         pair.slave_faces[f] = slave.current_face(f);
-        for (unsigned int i = 0; i < 9; ++i)
+        for (unsigned int i = 0; i < face_nodes; ++i)
           normal_sum[slave.faces[f].nodes[i]] +=
-            pair.slave_faces[f].normal(Quad9::node_parameter(i));
+            pair.slave_faces[f].normal(ContactFace::node_parameter(i));
       }
     for (unsigned int j = 0; j < n; ++j)
       {
@@ -722,7 +723,11 @@ namespace DuctileContact
   {
     // A node that only touches the overlap at its rim (or not at all)
     // carries no contact.
-    return aggregates[j].area > 1e-10 * face_size * face_size;
+    // (The area is a length in 2-D.)
+    if constexpr (dim == 3)
+      return aggregates[j].area > 1e-10 * face_size * face_size;
+    else
+      return aggregates[j].area > 1e-10 * face_size;
   }
 
 

@@ -62,17 +62,21 @@ namespace DuctileContact
     Point<dim>
     point_at(const double *p)
     {
-      return Point<dim>(p[0], p[1], p[2]);
+      Point<dim> x;
+      for (unsigned int c = 0; c < dim; ++c)
+        x[c] = p[c];
+      return x;
     }
 
-    /// Quad9 shape function values at the parameter point of @p surface's
+    /// Face shape function values at the parameter point of @p surface's
     /// face that contains the reference point @p x (the face whose
-    /// parameters lie farthest inside [0, 1]^2); false if no face does.
+    /// parameters lie farthest inside [0, 1]^(dim-1)); false if no face
+    /// does.
     bool
-    locate_on_faces(const ContactSurface  &surface,
-                    const Point<dim>      &x,
-                    unsigned int          &face,
-                    std::array<double, 9> &shape)
+    locate_on_faces(const ContactSurface           &surface,
+                    const Point<dim>               &x,
+                    unsigned int                   &face,
+                    std::array<double, face_nodes> &shape)
     {
       // Slack for points a curved boundary description moved off the old
       // faces' quadratic geometry.
@@ -80,23 +84,26 @@ namespace DuctileContact
       double           best  = -std::numeric_limits<double>::max();
       for (unsigned int f = 0; f < surface.faces.size(); ++f)
         {
-          Quad9 q;
-          for (unsigned int n = 0; n < 9; ++n)
+          ContactFace q;
+          for (unsigned int n = 0; n < face_nodes; ++n)
             q.x[n] = surface.nodes[surface.faces[f].nodes[n]].reference;
-          const double size = q.x[0].distance(q.x[8]);
-          if (x.distance(q.x[4]) > size)
+          // The diagonal (3-D) or chord (2-D).
+          const double size = q.x[0].distance(q.x[face_nodes - 1]);
+          if (x.distance(q.x[ContactFace::centre_node]) > size)
             continue;
-          Point<2> xi;
-          if (!q.project_along(x, q.normal(Point<2>(0.5, 0.5)), {0.5, 0.5}, xi))
+          FaceParameter xi;
+          if (!q.project_along(
+                x, q.normal(ContactFace::centre()), ContactFace::centre(), xi))
             continue;
-          const double inside =
-            std::min({xi[0], xi[1], 1. - xi[0], 1. - xi[1]});
+          double inside = std::numeric_limits<double>::max();
+          for (unsigned int k = 0; k + 1 < dim; ++k)
+            inside = std::min({inside, xi[k], 1. - xi[k]});
           if (inside > best && inside > -slack &&
               q.position(xi).distance(x) < 1e-3 * size)
             {
               best = inside;
               face = f;
-              Quad9::shape(xi, shape);
+              ContactFace::shape(xi, shape);
             }
         }
       return best > -std::numeric_limits<double>::max();
@@ -230,14 +237,14 @@ namespace DuctileContact
                 pair.committed_traction[j]   = old.committed_traction[k];
                 continue;
               }
-            unsigned int          f = 0;
-            std::array<double, 9> N;
+            unsigned int                   f = 0;
+            std::array<double, face_nodes> N;
             if (!locate_on_faces(old.slave, x, f, N))
               throw std::logic_error("transfer_committed_state: a new slave "
                                      "node lies on no old slave face");
             pair.committed_multiplier[j] = 0.;
             pair.committed_traction[j]   = Tensor<1, dim>();
-            for (unsigned int n = 0; n < 9; ++n)
+            for (unsigned int n = 0; n < face_nodes; ++n)
               {
                 const unsigned int node = old.slave.faces[f].nodes[n];
                 pair.committed_multiplier[j] +=

@@ -18,14 +18,15 @@ namespace DuctileContact
   namespace
   {
     /// Parents of a hanging node on a quad9 face: the three nodes of the
-    /// coarse edge it lies on.
+    /// coarse edge it lies on (a line3 face of a 2-D mesh has no hanging
+    /// nodes: its ends are vertices of the coarse neighbour too).
     constexpr unsigned int max_parents = 3;
-    /// Doubles per gathered node: 3 DoF indices, 3 reference coordinates,
-    /// the number of parents and (DoF of the parent's x component, weight)
-    /// for each.
+    /// Doubles per gathered node: 3 DoF indices, 3 reference coordinates
+    /// (the last of each unused in 2-D), the number of parents and (DoF of
+    /// the parent's x component, weight) for each.
     constexpr unsigned int node_record = 6 + 1 + 2 * max_parents;
-    /// Doubles per gathered face: material id, then its 9 nodes.
-    constexpr unsigned int face_record = 1 + 9 * node_record;
+    /// Doubles per gathered face: material id, then its nodes.
+    constexpr unsigned int face_record = 1 + face_nodes * node_record;
 
 
 
@@ -40,18 +41,22 @@ namespace DuctileContact
     {
       const FiniteElement<dim> &fe   = cell->get_fe();
       const auto               &base = fe.base_element(0);
-      if (base.degree != 2 || base.dofs_per_cell != 27)
+      if (base.degree != 2 ||
+          base.dofs_per_cell != Utilities::fixed_power<dim>(3u))
         throw InputError("Finite elements/Polynomial degree",
                          std::to_string(base.degree),
                          "2 in a scene with contact (the mortar contact works "
-                         "on quad9 faces)");
+                         "on the faces of quadratic cells: quad9, line3)");
       cell_dofs.resize(fe.n_dofs_per_cell());
       cell->get_dof_indices(cell_dofs);
 
-      // Parameters of the face: the two free cell coordinates in cyclic
-      // order after the face's normal direction.
-      const unsigned int d = f / 2, c1 = (d + 1) % 3, c2 = (d + 2) % 3;
-      std::array<std::array<double, node_record>, 9> node_data{};
+      // Parameters of the face: the free cell coordinates in cyclic order
+      // after the face's normal direction.
+      const unsigned int d = f / 2, c1 = (d + 1) % dim;
+#if DUCTILE_CONTACT_DIM == 3
+      const unsigned int c2 = (d + 2) % 3;
+#endif
+      std::array<std::array<double, node_record>, face_nodes> node_data{};
       for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
         {
           const auto ci = fe.system_to_component_index(i);
@@ -59,10 +64,14 @@ namespace DuctileContact
             continue;
           const Point<dim>   p = base.unit_support_point(ci.second);
           const unsigned int a = std::lround(2. * p[c1]);
-          const unsigned int b = std::lround(2. * p[c2]);
-          const Point<dim>   X =
+#if DUCTILE_CONTACT_DIM == 3
+          const unsigned int b    = std::lround(2. * p[c2]);
+          auto              &data = node_data[a + 3 * b];
+#else
+          auto &data = node_data[a];
+#endif
+          const Point<dim> X =
             discretisation.mapping[0].transform_unit_to_real_cell(cell, p);
-          auto &data = node_data[a + 3 * b];
           for (unsigned int c = 0; c < dim; ++c)
             {
               data[c] = static_cast<double>(
@@ -83,15 +92,23 @@ namespace DuctileContact
                 }
             }
         }
-      // Orientation: x_xi x x_eta must point out of the cell.
-      Quad9 q;
-      for (unsigned int n = 0; n < 9; ++n)
-        q.x[n] = Point<dim>(node_data[n][3], node_data[n][4], node_data[n][5]);
-      const Tensor<1, dim> out = q.x[4] - cell->center();
-      if (q.normal(Point<2>(0.5, 0.5)) * out < 0.)
-        for (unsigned int a = 0; a < 3; ++a)
-          for (unsigned int b = a + 1; b < 3; ++b)
-            std::swap(node_data[a + 3 * b], node_data[b + 3 * a]);
+      // Orientation: the normal (x_xi x x_eta; x_xi turned by -90 degrees
+      // in 2-D) must point out of the cell.
+      ContactFace q;
+      for (unsigned int n = 0; n < face_nodes; ++n)
+        for (unsigned int c = 0; c < dim; ++c)
+          q.x[n][c] = node_data[n][3 + c];
+      const Tensor<1, dim> out = q.x[ContactFace::centre_node] - cell->center();
+      if (q.normal(ContactFace::centre()) * out < 0.)
+        {
+#if DUCTILE_CONTACT_DIM == 3
+          for (unsigned int a = 0; a < 3; ++a)
+            for (unsigned int b = a + 1; b < 3; ++b)
+              std::swap(node_data[a + 3 * b], node_data[b + 3 * a]);
+#else
+          std::swap(node_data[0], node_data[2]);
+#endif
+        }
       local.push_back(cell->material_id());
       for (const auto &data : node_data)
         local.insert(local.end(), data.begin(), data.end());
@@ -129,7 +146,7 @@ namespace DuctileContact
         {
           Face face;
           face.material_id = static_cast<types::material_id>(records[r]);
-          for (unsigned int n = 0; n < 9; ++n)
+          for (unsigned int n = 0; n < face_nodes; ++n)
             {
               const double *data = &records[r + 1 + node_record * n];
               Node          node;
@@ -154,7 +171,7 @@ namespace DuctileContact
         }
     // A fixed face order (by reference centre) whatever the partition.
     const auto centre = [&](const Face &f) {
-      return nodes[f.nodes[4]].reference;
+      return nodes[f.nodes[ContactFace::centre_node]].reference;
     };
     std::sort(faces.begin(), faces.end(), [&](const Face &a, const Face &b) {
       const Point<dim> pa = centre(a), pb = centre(b);
@@ -217,11 +234,11 @@ namespace DuctileContact
 
 
 
-  Quad9
+  ContactFace
   ContactSurface::current_face(const unsigned int f) const
   {
-    Quad9 q;
-    for (unsigned int n = 0; n < 9; ++n)
+    ContactFace q;
+    for (unsigned int n = 0; n < face_nodes; ++n)
       q.x[n] = nodes[faces[f].nodes[n]].current;
     return q;
   }
@@ -232,11 +249,16 @@ namespace DuctileContact
   ContactSurface::smallest_face_size() const
   {
     double h = std::numeric_limits<double>::max();
+#if DUCTILE_CONTACT_DIM == 3
+    const auto edges = {std::pair{0u, 2u},
+                        std::pair{2u, 8u},
+                        std::pair{8u, 6u},
+                        std::pair{6u, 0u}};
+#else
+    const auto edges     = {std::pair{0u, 2u}};
+#endif
     for (const Face &f : faces)
-      for (const auto &[a, b] : {std::pair{0u, 2u},
-                                 std::pair{2u, 8u},
-                                 std::pair{8u, 6u},
-                                 std::pair{6u, 0u}})
+      for (const auto &[a, b] : edges)
         h = std::min(
           h,
           (nodes[f.nodes[a]].reference - nodes[f.nodes[b]].reference).norm());
@@ -249,8 +271,13 @@ namespace DuctileContact
   ContactSurface::largest_face_size() const
   {
     double h = 0;
+#if DUCTILE_CONTACT_DIM == 3
+    const auto diagonals = {std::pair{0u, 8u}, std::pair{2u, 6u}};
+#else
+    const auto diagonals = {std::pair{0u, 2u}};
+#endif
     for (const Face &f : faces)
-      for (const auto &[a, b] : {std::pair{0u, 8u}, std::pair{2u, 6u}})
+      for (const auto &[a, b] : diagonals)
         h = std::max(
           h,
           (nodes[f.nodes[a]].reference - nodes[f.nodes[b]].reference).norm());

@@ -272,12 +272,16 @@ namespace DuctileContact
     std::array<unsigned int, n_coordinates> keys;
     for (unsigned int a = 0; a < n_coordinates; ++a)
       {
-        keys[a]    = a < 27 ? 3 * s_nodes[a / 3] + a % 3
-                            : 3 * (ns + m_nodes[(a - 27) / 3]) + a % 3;
+        // AD direction a: slave (dim i + c), then master coordinates; the
+        // keys number node coordinates with stride 3 in either build.
+        keys[a] =
+          a < face_coordinates
+            ? 3 * s_nodes[a / dim] + a % dim
+            : 3 * (ns + m_nodes[(a - face_coordinates) / dim]) + a % dim;
         indices[a] = coordinate_dof(pair, keys[a]);
       }
     matrix = 0.;
-    for (unsigned int i = 0; i < 9; ++i)
+    for (unsigned int i = 0; i < face_nodes; ++i)
       {
         const unsigned int j = s_nodes[i];
         if (!needed[j])
@@ -287,7 +291,7 @@ namespace DuctileContact
         for (unsigned int a = 0; a < n_coordinates; ++a)
           {
             std::array<double, 10> &e = g[keys[a]];
-            for (unsigned int k = 0; k < 9; ++k)
+            for (unsigned int k = 0; k < face_nodes; ++k)
               {
                 if (pair.semi_smooth && k != i)
                   continue; // lumped: D_ii holds the row sum
@@ -300,10 +304,10 @@ namespace DuctileContact
                     e[4 + r] += d * (slave.nodes[node].current[r] -
                                      pair.slave_committed[node][r]);
                     if (slave_rows)
-                      matrix(3 * k + r, a) += d * force[r];
+                      matrix(dim * k + r, a) += d * force[r];
                   }
               }
-            for (unsigned int l = 0; l < 9; ++l)
+            for (unsigned int l = 0; l < face_nodes; ++l)
               {
                 const double       m    = operators.dM[i][l][a];
                 const unsigned int node = m_nodes[l];
@@ -312,7 +316,7 @@ namespace DuctileContact
                     e[1 + r] += m * master.nodes[node].current[r];
                     e[4 + r] -= m * (master.nodes[node].current[r] -
                                      pair.master_committed[node][r]);
-                    matrix(27 + 3 * l + r, a) -= m * force[r];
+                    matrix(face_coordinates + dim * l + r, a) -= m * force[r];
                   }
               }
           }
@@ -365,9 +369,9 @@ namespace DuctileContact
       {
         const auto &nodes = slave.faces[f].nodes;
         const auto i = std::find(nodes.begin(), nodes.end(), j) - nodes.begin();
-        const auto dn =
-          pair.slave_faces[f].normal_derivatives(Quad9::node_parameter(i));
-        for (unsigned int r = 0; r < 9; ++r)
+        const auto dn = pair.slave_faces[f].normal_derivatives(
+          ContactFace::node_parameter(i));
+        for (unsigned int r = 0; r < face_nodes; ++r)
           {
             const Tensor<2, dim> dn_j = P * dn[r];
             for (unsigned int m = 0; m < dim; ++m)

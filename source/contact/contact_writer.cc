@@ -14,29 +14,28 @@ namespace DuctileContact
   namespace
   {
     /// The scalar and vector fields of the surface output, in the order
-    /// of their rows in a patch.
-    const std::vector<std::string> field_names = {"pressure",
-                                                  "gap",
-                                                  "active",
-                                                  "friction_state",
-                                                  "normal",
-                                                  "normal",
-                                                  "normal",
-                                                  "slip",
-                                                  "slip",
-                                                  "slip",
-                                                  "traction",
-                                                  "traction",
-                                                  "traction"};
+    /// of their rows in a patch (each vector's name once per component).
+    std::vector<std::string>
+    make_field_names()
+    {
+      std::vector<std::string> names = {"pressure",
+                                        "gap",
+                                        "active",
+                                        "friction_state"};
+      for (const char *vector : {"normal", "slip", "traction"})
+        names.insert(names.end(), dim, vector);
+      return names;
+    }
+    const std::vector<std::string> field_names = make_field_names();
 
     /**
-     * A slave surface as DataOut patches: each quad9 face a patch with two
-     * subdivisions whose nine points are its nodes (quad9 order is the
-     * lexicographic order of a patch's points), at their current
-     * positions, so that DataOutInterface writes it in parallel as vtu or
-     * HDF5.
+     * A slave surface as DataOut patches: each face (quad9, line3) a patch
+     * with two subdivisions whose points are its nodes (the face's node
+     * order is the lexicographic order of a patch's points), at their
+     * current positions, so that DataOutInterface writes it in parallel as
+     * vtu or HDF5.
      */
-    class SurfacePatches : public DataOutInterface<2, dim>
+    class SurfacePatches : public DataOutInterface<dim - 1, dim>
     {
     public:
       SurfacePatches(const ContactNodalData &data, const MPI_Comm comm)
@@ -44,19 +43,19 @@ namespace DuctileContact
         const ContactSurface &surface = *data.surface;
         const unsigned int    rank    = Utilities::MPI::this_mpi_process(comm);
         const unsigned int    ranks   = Utilities::MPI::n_mpi_processes(comm);
-        // deal.II's vertex order of a quadrilateral, in quad9 numbering.
-        constexpr unsigned int corners[4] = {0, 2, 6, 8};
+        // deal.II's vertex order of the face, in face node numbering.
+        constexpr auto corners = ContactFace::vertices;
         for (unsigned int f = rank; f < surface.faces.size(); f += ranks)
           {
-            const auto                &face = surface.faces[f];
-            DataOutBase::Patch<2, dim> patch;
+            const auto                      &face = surface.faces[f];
+            DataOutBase::Patch<dim - 1, dim> patch;
             patch.n_subdivisions = 2;
-            patch.reference_cell = ReferenceCells::Quadrilateral;
-            for (unsigned int v = 0; v < 4; ++v)
+            patch.reference_cell = ReferenceCells::get_hypercube<dim - 1>();
+            for (unsigned int v = 0; v < corners.size(); ++v)
               patch.vertices[v] = surface.nodes[face.nodes[corners[v]]].current;
             patch.points_are_available = true;
-            patch.data.reinit(field_names.size() + dim, 9);
-            for (unsigned int k = 0; k < 9; ++k)
+            patch.data.reinit(field_names.size() + dim, face_nodes);
+            for (unsigned int k = 0; k < face_nodes; ++k)
               {
                 const unsigned int j   = face.nodes[k];
                 unsigned int       row = 0;
@@ -79,7 +78,7 @@ namespace DuctileContact
       }
 
     private:
-      const std::vector<DataOutBase::Patch<2, dim>> &
+      const std::vector<DataOutBase::Patch<dim - 1, dim>> &
       get_patches() const override
       {
         return patches;
@@ -100,12 +99,12 @@ namespace DuctileContact
       {
         const auto vector =
           DataComponentInterpretation::component_is_part_of_vector;
-        return {{4, 6, "normal", vector},
-                {7, 9, "slip", vector},
-                {10, 12, "traction", vector}};
+        return {{4, 3 + dim, "normal", vector},
+                {4 + dim, 3 + 2 * dim, "slip", vector},
+                {4 + 2 * dim, 3 + 3 * dim, "traction", vector}};
       }
 
-      std::vector<DataOutBase::Patch<2, dim>> patches;
+      std::vector<DataOutBase::Patch<dim - 1, dim>> patches;
     };
 
 
@@ -116,9 +115,13 @@ namespace DuctileContact
     {
       const ContactSurface &surface = *data.surface;
       std::ofstream         table(file);
-      table << "X Y Z x y z pressure gap active slip_x slip_y slip_z "
-               "traction_x traction_y traction_z\n"
-            << std::setprecision(12);
+      if constexpr (dim == 3)
+        table << "X Y Z x y z pressure gap active slip_x slip_y slip_z "
+                 "traction_x traction_y traction_z\n";
+      else
+        table << "X Y x y pressure gap active slip_x slip_y traction_x "
+                 "traction_y\n";
+      table << std::setprecision(12);
       for (unsigned int j = 0; j < surface.nodes.size(); ++j)
         {
           const auto &n = surface.nodes[j];

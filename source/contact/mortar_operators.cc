@@ -16,40 +16,45 @@ namespace DuctileContact
   namespace
   {
     template <typename Number>
-    using Matrix9 = std::array<std::array<Number, 9>, 9>;
+    using MatrixF = std::array<std::array<Number, face_nodes>, face_nodes>;
 
     /// Multiplier basis coefficients a_ik of the face x (class doc).
     template <typename Number>
-    Matrix9<Number>
+    MatrixF<Number>
     basis_coefficients(const FaceCoordinates<Number> &x, const bool dual)
     {
-      Matrix9<Number> a;
-      for (unsigned int i = 0; i < 9; ++i)
-        for (unsigned int k = 0; k < 9; ++k)
+      MatrixF<Number> a;
+      for (unsigned int i = 0; i < face_nodes; ++i)
+        for (unsigned int k = 0; k < face_nodes; ++k)
           a[i][k] = i == k ? 1. : 0.;
       if (!dual)
         return a;
 
       using std::sqrt;
-      const QGauss<2>       gauss(4);
-      Matrix9<Number>       mass;
-      std::array<Number, 9> lumped;
-      for (unsigned int i = 0; i < 9; ++i)
+      const QGauss<dim - 1>          gauss(4);
+      MatrixF<Number>                mass;
+      std::array<Number, face_nodes> lumped;
+      for (unsigned int i = 0; i < face_nodes; ++i)
         {
           lumped[i] = 0.;
-          for (unsigned int k = 0; k < 9; ++k)
+          for (unsigned int k = 0; k < face_nodes; ++k)
             mass[i][k] = 0.;
         }
-      std::array<double, 9> n, n_xi, n_eta;
+#if DUCTILE_CONTACT_DIM == 3
+      std::array<double, face_nodes> n, n_xi, n_eta;
+#else
+      std::array<double, face_nodes> n, n_xi;
+#endif
       for (unsigned int q = 0; q < gauss.size(); ++q)
         {
-          Quad9::shape(gauss.point(q), n, &n_xi, &n_eta);
+#if DUCTILE_CONTACT_DIM == 3
+          ContactFace::shape(gauss.point(q), n, &n_xi, &n_eta);
           std::array<Number, dim> t0, t1;
           for (unsigned int c = 0; c < dim; ++c)
             {
               t0[c] = 0.;
               t1[c] = 0.;
-              for (unsigned int i = 0; i < 9; ++i)
+              for (unsigned int i = 0; i < face_nodes; ++i)
                 {
                   t0[c] += n_xi[i] * x[i][c];
                   t1[c] += n_eta[i] * x[i][c];
@@ -59,91 +64,117 @@ namespace DuctileContact
           const Number c1 = t0[2] * t1[0] - t0[0] * t1[2];
           const Number c2 = t0[0] * t1[1] - t0[1] * t1[0];
           const Number dA = sqrt(c0 * c0 + c1 * c1 + c2 * c2) * gauss.weight(q);
-          for (unsigned int i = 0; i < 9; ++i)
+#else
+          ContactFace::shape(gauss.point(q), n, &n_xi);
+          std::array<Number, dim> t0;
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              t0[c] = 0.;
+              for (unsigned int i = 0; i < face_nodes; ++i)
+                t0[c] += n_xi[i] * x[i][c];
+            }
+          const Number dA =
+            sqrt(t0[0] * t0[0] + t0[1] * t0[1]) * gauss.weight(q);
+#endif
+          for (unsigned int i = 0; i < face_nodes; ++i)
             {
               const Number w = n[i] * dA;
               lumped[i] += w;
-              for (unsigned int k = 0; k < 9; ++k)
+              for (unsigned int k = 0; k < face_nodes; ++k)
                 mass[i][k] += w * n[k];
             }
         }
       // a = diag(lumped) mass^-1 by Gauss-Jordan elimination on [mass |
       // diag(lumped)]^T (mass is symmetric positive definite: no pivoting).
-      Matrix9<Number> rhs;
-      for (unsigned int i = 0; i < 9; ++i)
-        for (unsigned int k = 0; k < 9; ++k)
+      MatrixF<Number> rhs;
+      for (unsigned int i = 0; i < face_nodes; ++i)
+        for (unsigned int k = 0; k < face_nodes; ++k)
           rhs[i][k] = i == k ? lumped[i] : Number(0.);
       // Solve mass X = rhs; then a = X^T = X (mass symmetric, rhs diagonal:
       // a = L M^-1 and X = M^-1 L, so a = X^T).
-      for (unsigned int p = 0; p < 9; ++p)
+      for (unsigned int p = 0; p < face_nodes; ++p)
         {
           const Number pivot = mass[p][p];
-          for (unsigned int k = 0; k < 9; ++k)
+          for (unsigned int k = 0; k < face_nodes; ++k)
             {
               mass[p][k] /= pivot;
               rhs[p][k] /= pivot;
             }
-          for (unsigned int r = 0; r < 9; ++r)
+          for (unsigned int r = 0; r < face_nodes; ++r)
             if (r != p)
               {
                 const Number factor = mass[r][p];
-                for (unsigned int k = 0; k < 9; ++k)
+                for (unsigned int k = 0; k < face_nodes; ++k)
                   {
                     mass[r][k] -= factor * mass[p][k];
                     rhs[r][k] -= factor * rhs[p][k];
                   }
               }
         }
-      for (unsigned int i = 0; i < 9; ++i)
-        for (unsigned int k = 0; k < 9; ++k)
+      for (unsigned int i = 0; i < face_nodes; ++i)
+        for (unsigned int k = 0; k < face_nodes; ++k)
           a[i][k] = rhs[k][i];
       return a;
     }
 
-    /// The nine shape functions at @p xi. In ContactAD by the chain rule,
+    /// The face's shape functions at @p xi. In ContactAD by the chain rule,
     /// N_i(xi) + dN_i/dxi_k dxi_k, from their values and gradients at the
     /// value of @p xi: two vector updates each instead of the products of
     /// Quad9::shape_of() in ContactAD (~3 times the work).
     template <typename Number>
     void
-    shape_values(const std::array<Number, 2> &xi, std::array<Number, 9> &n)
+    shape_values(const std::array<Number, dim - 1> &xi,
+                 std::array<Number, face_nodes>    &n)
     {
       if constexpr (std::is_same_v<Number, ContactAD>)
         {
-          std::array<double, 9> v, v_xi, v_eta;
+#if DUCTILE_CONTACT_DIM == 3
+          std::array<double, face_nodes> v, v_xi, v_eta;
           Quad9::shape(Point<2>(xi[0].val(), xi[1].val()), v, &v_xi, &v_eta);
           const double *d0 = &xi[0].fastAccessDx(0);
           const double *d1 = &xi[1].fastAccessDx(0);
-          for (unsigned int i = 0; i < 9; ++i)
+          for (unsigned int i = 0; i < face_nodes; ++i)
             {
               n[i]      = v[i];
               double *d = &n[i].fastAccessDx(0);
               for (unsigned int a = 0; a < face_pair_coordinates; ++a)
                 d[a] = v_xi[i] * d0[a] + v_eta[i] * d1[a];
             }
+#else
+          std::array<double, face_nodes> v, v_xi;
+          ContactFace::shape(FaceParameter(xi[0].val()), v, &v_xi);
+          const double *d0 = &xi[0].fastAccessDx(0);
+          for (unsigned int i = 0; i < face_nodes; ++i)
+            {
+              n[i]      = v[i];
+              double *d = &n[i].fastAccessDx(0);
+              for (unsigned int a = 0; a < face_pair_coordinates; ++a)
+                d[a] = v_xi[i] * d0[a];
+            }
+#endif
         }
       else
-        Quad9::shape_of(xi, n);
+        ContactFace::shape_of(xi, n);
     }
 
     /// D = a Dhat and M = a Mhat (class doc), D as @p lumped says (then
     /// only its diagonal, a dhat).
     template <typename Number>
     void
-    apply_basis(const Matrix9<Number>       &a,
-                const bool                   lumped,
-                const std::array<Number, 9> &d_hat,
-                const Matrix9<Number>       &D_hat,
-                const Matrix9<Number>       &M_hat,
-                Matrix9<Number>             &D,
-                Matrix9<Number>             &M)
+    apply_basis(const MatrixF<Number>                &a,
+                const bool                            lumped,
+                const std::array<Number, face_nodes> &d_hat,
+                const MatrixF<Number>                &D_hat,
+                const MatrixF<Number>                &M_hat,
+                MatrixF<Number>                      &D,
+                MatrixF<Number>                      &M)
     {
-      for (unsigned int i = 0; i < 9; ++i)
-        for (unsigned int k = 0; k < 9; ++k)
+      for (unsigned int i = 0; i < face_nodes; ++i)
+        for (unsigned int k = 0; k < face_nodes; ++k)
           {
             D[i][k] = 0.;
             M[i][k] = 0.;
-            for (unsigned int m = 0; m < 9; ++m)
+            for (unsigned int m = 0; m < face_nodes; ++m)
               {
                 if (lumped && k == i)
                   D[i][k] += a[i][m] * d_hat[m];
@@ -171,19 +202,24 @@ namespace DuctileContact
      */
     void
     sum_lumped_derivatives(const std::vector<MortarPointOf<ContactAD>> &points,
-                           std::array<ContactAD, 9>                    &d_hat,
-                           Matrix9<ContactAD>                          &M_hat)
+                           std::array<ContactAD, face_nodes>           &d_hat,
+                           MatrixF<ContactAD>                          &M_hat)
     {
-      constexpr unsigned int n = face_pair_coordinates, width = 9 * n;
+      constexpr unsigned int n = face_pair_coordinates, width = face_nodes * n;
       constexpr unsigned int block = 64;
       // Kept from pair to pair (thread_local: the tangent integrates the
       // pairs of one rank one after the other; no zero fill per pair).
-      thread_local FullMatrix<double> W(block, 9), N(block, 9),
-        dW(block, width), dN(block, width), M_values(9, 9), N_dW(9, width),
-        W_dN(9, width);
-      std::array<double, 9>     ns, ns_xi, ns_eta, nm, nm_xi, nm_eta;
-      std::array<double, 9>     d_values{};
-      std::array<double, width> d_sum{};
+      thread_local FullMatrix<double> W(block, face_nodes),
+        N(block, face_nodes), dW(block, width), dN(block, width),
+        M_values(face_nodes, face_nodes), N_dW(face_nodes, width),
+        W_dN(face_nodes, width);
+#if DUCTILE_CONTACT_DIM == 3
+      std::array<double, face_nodes> ns, ns_xi, ns_eta, nm, nm_xi, nm_eta;
+#else
+      std::array<double, face_nodes> ns, ns_xi, nm, nm_xi;
+#endif
+      std::array<double, face_nodes> d_values{};
+      std::array<double, width>      d_sum{};
       for (std::size_t first = 0; first < points.size(); first += block)
         {
           const unsigned int size =
@@ -199,6 +235,7 @@ namespace DuctileContact
           for (unsigned int r = 0; r < size; ++r)
             {
               const MortarPointOf<ContactAD> &q = points[first + r];
+#if DUCTILE_CONTACT_DIM == 3
               Quad9::shape(Point<2>(q.slave[0].val(), q.slave[1].val()),
                            ns,
                            &ns_xi,
@@ -207,28 +244,40 @@ namespace DuctileContact
                            nm,
                            &nm_xi,
                            &nm_eta);
+              const double *ds1 = &q.slave[1].fastAccessDx(0);
+              const double *dm1 = &q.master[1].fastAccessDx(0);
+#else
+              ContactFace::shape(FaceParameter(q.slave[0].val()), ns, &ns_xi);
+              ContactFace::shape(FaceParameter(q.master[0].val()), nm, &nm_xi);
+#endif
               const double  w   = q.weight.val();
               const double *dw  = &q.weight.fastAccessDx(0);
               const double *ds0 = &q.slave[0].fastAccessDx(0);
-              const double *ds1 = &q.slave[1].fastAccessDx(0);
               const double *dm0 = &q.master[0].fastAccessDx(0);
-              const double *dm1 = &q.master[1].fastAccessDx(0);
-              for (unsigned int i = 0; i < 9; ++i)
+              for (unsigned int i = 0; i < face_nodes; ++i)
                 {
                   W(r, i)           = w * ns[i];
                   N(r, i)           = nm[i];
                   const double c_w  = ns[i];
                   const double c_s0 = w * ns_xi[i];
-                  const double c_s1 = w * ns_eta[i];
                   const double c_m0 = nm_xi[i];
-                  const double c_m1 = nm_eta[i];
                   double      *dW_i = &dW(r, i * n);
                   double      *dN_i = &dN(r, i * n);
+#if DUCTILE_CONTACT_DIM == 3
+                  const double c_s1 = w * ns_eta[i];
+                  const double c_m1 = nm_eta[i];
                   for (unsigned int a = 0; a < n; ++a)
                     {
                       dW_i[a] = c_w * dw[a] + c_s0 * ds0[a] + c_s1 * ds1[a];
                       dN_i[a] = c_m0 * dm0[a] + c_m1 * dm1[a];
                     }
+#else
+                  for (unsigned int a = 0; a < n; ++a)
+                    {
+                      dW_i[a] = c_w * dw[a] + c_s0 * ds0[a];
+                      dN_i[a] = c_m0 * dm0[a];
+                    }
+#endif
                   d_values[i] += W(r, i);
                   for (unsigned int a = 0; a < n; ++a)
                     d_sum[i * n + a] += dW_i[a];
@@ -239,12 +288,12 @@ namespace DuctileContact
           N.Tmmult(N_dW, dW, adding);
           W.Tmmult(W_dN, dN, adding);
         }
-      for (unsigned int i = 0; i < 9; ++i)
+      for (unsigned int i = 0; i < face_nodes; ++i)
         {
           d_hat[i] = d_values[i];
           for (unsigned int a = 0; a < n; ++a)
             d_hat[i].fastAccessDx(a) = d_sum[i * n + a];
-          for (unsigned int l = 0; l < 9; ++l)
+          for (unsigned int l = 0; l < face_nodes; ++l)
             {
               M_hat[i][l] = M_values(i, l);
               for (unsigned int a = 0; a < n; ++a)
@@ -261,17 +310,17 @@ namespace DuctileContact
     bool
     integrate_pair(const FaceCoordinates<Number> &slave,
                    const FaceCoordinates<Number> &master,
-                   const Matrix9<Number>         &a,
+                   const MatrixF<Number>         &a,
                    const SlaveWeights             weights,
-                   Matrix9<Number>               &D,
-                   Matrix9<Number>               &M)
+                   MatrixF<Number>               &D,
+                   MatrixF<Number>               &M)
     {
       const auto points = mortar_points(slave, master);
       if (points.empty())
         return false;
-      const bool            lumped = weights == SlaveWeights::lumped;
-      Matrix9<Number>       D_hat, M_hat;
-      std::array<Number, 9> d_hat;
+      const bool                     lumped = weights == SlaveWeights::lumped;
+      MatrixF<Number>                D_hat, M_hat;
+      std::array<Number, face_nodes> d_hat;
       if constexpr (std::is_same_v<Number, ContactAD>)
         if (lumped)
           {
@@ -279,33 +328,33 @@ namespace DuctileContact
             apply_basis(a, lumped, d_hat, D_hat, M_hat, D, M);
             return true;
           }
-      for (unsigned int i = 0; i < 9; ++i)
+      for (unsigned int i = 0; i < face_nodes; ++i)
         {
           d_hat[i] = 0.;
-          for (unsigned int k = 0; k < 9; ++k)
+          for (unsigned int k = 0; k < face_nodes; ++k)
             {
               D_hat[i][k] = 0.;
               M_hat[i][k] = 0.;
             }
         }
-      std::array<Number, 9> ns, nm;
+      std::array<Number, face_nodes> ns, nm;
       for (const auto &q : points)
         {
           shape_values(q.slave, ns);
           shape_values(q.master, nm);
-          for (unsigned int i = 0; i < 9; ++i)
+          for (unsigned int i = 0; i < face_nodes; ++i)
             {
               const Number w = q.weight * ns[i];
               if (lumped)
                 d_hat[i] += w;
               else
-                for (unsigned int k = i; k < 9; ++k)
+                for (unsigned int k = i; k < face_nodes; ++k)
                   D_hat[i][k] += w * ns[k];
-              for (unsigned int l = 0; l < 9; ++l)
+              for (unsigned int l = 0; l < face_nodes; ++l)
                 M_hat[i][l] += w * nm[l];
             }
         }
-      for (unsigned int i = 0; i < 9; ++i)
+      for (unsigned int i = 0; i < face_nodes; ++i)
         for (unsigned int k = 0; k < i; ++k)
           D_hat[i][k] = D_hat[k][i];
       apply_basis(a, lumped, d_hat, D_hat, M_hat, D, M);
@@ -317,12 +366,12 @@ namespace DuctileContact
 
   struct MortarFace::BasisDerivatives
   {
-    Matrix9<ContactAD> a;
+    MatrixF<ContactAD> a;
   };
 
 
 
-  MortarFace::MortarFace(const Quad9       &slave,
+  MortarFace::MortarFace(const ContactFace &slave,
                          const bool         dual,
                          const SlaveWeights weights)
       : slave(slave)
@@ -335,7 +384,7 @@ namespace DuctileContact
 
 
   bool
-  MortarFace::integrate(const Quad9       &master,
+  MortarFace::integrate(const ContactFace &master,
                         FacePairOperators &out,
                         const bool         derivatives) const
   {
@@ -348,12 +397,14 @@ namespace DuctileContact
                             out.M);
 
     FaceCoordinates<ContactAD> s, m;
-    for (unsigned int i = 0; i < 9; ++i)
+    for (unsigned int i = 0; i < face_nodes; ++i)
       for (unsigned int c = 0; c < dim; ++c)
         {
-          s[i][c] = ContactAD(face_pair_coordinates, 3 * i + c, slave.x[i][c]);
-          m[i][c] =
-            ContactAD(face_pair_coordinates, 27 + 3 * i + c, master.x[i][c]);
+          s[i][c] =
+            ContactAD(face_pair_coordinates, dim * i + c, slave.x[i][c]);
+          m[i][c] = ContactAD(face_pair_coordinates,
+                              face_coordinates + dim * i + c,
+                              master.x[i][c]);
         }
     if (!basis_derivatives)
       {
@@ -361,11 +412,11 @@ namespace DuctileContact
         b->a              = basis_coefficients(s, dual);
         basis_derivatives = b;
       }
-    Matrix9<ContactAD> D, M;
+    MatrixF<ContactAD> D, M;
     if (!integrate_pair(s, m, basis_derivatives->a, weights, D, M))
       return false;
-    for (unsigned int i = 0; i < 9; ++i)
-      for (unsigned int k = 0; k < 9; ++k)
+    for (unsigned int i = 0; i < face_nodes; ++i)
+      for (unsigned int k = 0; k < face_nodes; ++k)
         {
           out.D[i][k] = D[i][k].val();
           out.M[i][k] = M[i][k].val();

@@ -1,3 +1,4 @@
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/tensor.h>
 
 #include <ductile_contact/contact/contact_ad.h>
@@ -39,19 +40,26 @@ namespace DuctileContact
       return d;
     }
 
-    /// a x b. Quad9 faces lie in 3-D space; the plane-strain build has no
-    /// contact (RunParameters::check()), and there this is zero.
+#if DUCTILE_CONTACT_DIM == 3
+    /// a x b.
     template <typename Number>
     Vec<Number>
     cross(const Vec<Number> &a, const Vec<Number> &b)
     {
-      Vec<Number> n{};
-      if constexpr (dim == 3)
-        n = {{a[1] * b[2] - a[2] * b[1],
-              a[2] * b[0] - a[0] * b[2],
-              a[0] * b[1] - a[1] * b[0]}};
-      return n;
+      return {{a[1] * b[2] - a[2] * b[1],
+               a[2] * b[0] - a[0] * b[2],
+               a[0] * b[1] - a[1] * b[0]}};
     }
+#else
+    /// @p v turned by -90 degrees: the outward normal direction of a
+    /// segment of a line3 that runs along @p v (Line3::normal()).
+    template <typename Number>
+    Vec<Number>
+    turned(const Vec<Number> &v)
+    {
+      return {{v[1], -v[0]}};
+    }
+#endif
 
     template <typename Number>
     void
@@ -63,6 +71,7 @@ namespace DuctileContact
         c /= length;
     }
 
+#if DUCTILE_CONTACT_DIM == 3
     /// Sub-quad (p, q) of a quad9: its four nodes, counter-clockwise in
     /// the parameter plane (so that its normal points outward).
     std::array<unsigned int, 4>
@@ -70,6 +79,7 @@ namespace DuctileContact
     {
       return {{p + 3 * q, p + 1 + 3 * q, p + 1 + 3 * (q + 1), p + 3 * (q + 1)}};
     }
+#endif
 
     /// 2-D cross product of b - a and c - a.
     template <typename Number>
@@ -142,6 +152,7 @@ namespace DuctileContact
       return output;
     }
 
+#if DUCTILE_CONTACT_DIM == 3
     /// A point of a triangle rule: barycentric coordinates of the
     /// triangle's corners (apex, a, b) and the weight, the weights summing
     /// to 1.
@@ -198,13 +209,14 @@ namespace DuctileContact
       static const std::vector<TrianglePoint> rule = make_triangle_rule();
       return rule;
     }
+#endif
 
     template <typename Number>
-    Quad9
+    ContactFace
     values_of(const FaceCoordinates<Number> &x)
     {
-      Quad9 face;
-      for (unsigned int i = 0; i < 9; ++i)
+      ContactFace face;
+      for (unsigned int i = 0; i < face_nodes; ++i)
         for (unsigned int c = 0; c < dim; ++c)
           face.x[i][c] = value_of(x[i][c]);
       return face;
@@ -212,87 +224,81 @@ namespace DuctileContact
 
     /**
      * The parameter point where the line q + t d meets the face x: Newton
-     * on the values (Quad9::project_along), then one Newton correction in
-     * Number, which carries the derivatives dxi = -J^-1 dr (implicit
-     * function theorem, J = [x_xi, x_eta, -d] at the solution). The point
-     * is clamped to the face. With derivatives, x[i][c] is the independent
-     * variable @p first + 3 i + c.
+     * on the values (ContactFace::project_along), then one Newton
+     * correction in Number, which carries the derivatives dxi = -J^-1 dr
+     * (implicit function theorem, J = [x_xi, x_eta, -d] in 3-D, [x_xi, -d]
+     * in 2-D, at the solution). The point is clamped to the face. With
+     * derivatives, x[i][c] is the independent variable @p first + dim i + c.
      */
     template <typename Number>
     bool
     project(const FaceCoordinates<Number> &x,
             const unsigned int             first,
-            const Quad9                   &face,
+            const ContactFace             &face,
             const Vec<Number>             &q,
             const Vec<Number>             &d,
-            const Point<2>                &start,
-            Vec2<Number>                  &xi)
+            const FaceParameter           &start,
+            std::array<Number, dim - 1>   &xi)
     {
-      // Quad9 faces lie in 3-D space; the plane-strain build has no contact
-      // (RunParameters::check()) and never gets here.
-      if constexpr (dim != 3)
-        return false;
-      else
+      Point<dim>     q0;
+      Tensor<1, dim> d0;
+      for (unsigned int c = 0; c < dim; ++c)
         {
-          Point<dim>     q0;
-          Tensor<1, dim> d0;
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              q0[c] = value_of(q[c]);
-              d0[c] = value_of(d[c]);
-            }
-          Point<2> xi0;
-          if (!face.project_along(q0, d0, start, xi0))
-            return false;
-          const double   t  = (face.position(xi0) - q0) * d0 / d0.norm_square();
-          const auto     tg = face.tangents(xi0);
-          Tensor<2, dim> jac;
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              jac[c][0] = tg[0][c];
-              jac[c][1] = tg[1][c];
-              jac[c][2] = -d0[c];
-            }
-          const Tensor<2, dim>  inverse = invert(jac);
-          std::array<double, 9> n;
-          Quad9::shape(xi0, n);
-          Vec<Number> r;
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              r[c] = -q[c] - t * d[c];
-              if constexpr (std::is_same_v<Number, ContactAD>)
-                {
-                  // x[i][c] is the independent variable first + 3 i + c
-                  // (mortar_points()): its 9 terms touch one derivative each.
-                  for (unsigned int i = 0; i < 9; ++i)
-                    {
-                      Assert(x[i][c].fastAccessDx(first + 3 * i + c) == 1.,
-                             ExcInternalError());
-                      r[c].val() += n[i] * x[i][c].val();
-                      r[c].fastAccessDx(first + 3 * i + c) += n[i];
-                    }
-                }
-              else
-                for (unsigned int i = 0; i < 9; ++i)
-                  r[c] += n[i] * x[i][c];
-            }
-          for (unsigned int k = 0; k < 2; ++k)
-            {
-              xi[k] = xi0[k];
-              for (unsigned int c = 0; c < dim; ++c)
-                xi[k] -= inverse[k][c] * r[c];
-              if (value_of(xi[k]) < 0.)
-                xi[k] = 0.;
-              else if (value_of(xi[k]) > 1.)
-                xi[k] = 1.;
-            }
-          return true;
+          q0[c] = value_of(q[c]);
+          d0[c] = value_of(d[c]);
         }
+      FaceParameter xi0;
+      if (!face.project_along(q0, d0, start, xi0))
+        return false;
+      const double   t  = (face.position(xi0) - q0) * d0 / d0.norm_square();
+      const auto     tg = face.tangents(xi0);
+      Tensor<2, dim> jac;
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          for (unsigned int k = 0; k + 1 < dim; ++k)
+            jac[c][k] = tg[k][c];
+          jac[c][dim - 1] = -d0[c];
+        }
+      const Tensor<2, dim>           inverse = invert(jac);
+      std::array<double, face_nodes> n;
+      ContactFace::shape(xi0, n);
+      Vec<Number> r;
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          r[c] = -q[c] - t * d[c];
+          if constexpr (std::is_same_v<Number, ContactAD>)
+            {
+              // x[i][c] is the independent variable first + dim i + c
+              // (mortar_points()): its terms touch one derivative each.
+              for (unsigned int i = 0; i < face_nodes; ++i)
+                {
+                  Assert(x[i][c].fastAccessDx(first + dim * i + c) == 1.,
+                         ExcInternalError());
+                  r[c].val() += n[i] * x[i][c].val();
+                  r[c].fastAccessDx(first + dim * i + c) += n[i];
+                }
+            }
+          else
+            for (unsigned int i = 0; i < face_nodes; ++i)
+              r[c] += n[i] * x[i][c];
+        }
+      for (unsigned int k = 0; k + 1 < dim; ++k)
+        {
+          xi[k] = xi0[k];
+          for (unsigned int c = 0; c < dim; ++c)
+            xi[k] -= inverse[k][c] * r[c];
+          if (value_of(xi[k]) < 0.)
+            xi[k] = 0.;
+          else if (value_of(xi[k]) > 1.)
+            xi[k] = 1.;
+        }
+      return true;
     }
   } // namespace
 
 
 
+#if DUCTILE_CONTACT_DIM == 3
   namespace
   {
     /// One overlap of a slave and a master sub-quad, in the auxiliary
@@ -401,7 +407,8 @@ namespace DuctileContact
   mortar_points(const FaceCoordinates<Number> &slave,
                 const FaceCoordinates<Number> &master)
   {
-    const Quad9 slave_face = values_of(slave), master_face = values_of(master);
+    const ContactFace slave_face  = values_of(slave),
+                      master_face = values_of(master);
     std::vector<MortarPointOf<Number>> points;
     for_each_overlap(slave, master, [&](const SubQuadOverlap<Number> &o) {
       const unsigned int sq = o.slave_quad, mq = o.master_quad;
@@ -435,8 +442,13 @@ namespace DuctileContact
               MortarPointOf<Number> point;
               if (!project(
                     slave, 0, slave_face, q, o.n0, s_start, point.slave) ||
-                  !project(
-                    master, 27, master_face, q, o.n0, m_start, point.master))
+                  !project(master,
+                           face_coordinates,
+                           master_face,
+                           q,
+                           o.n0,
+                           m_start,
+                           point.master))
                 continue;
               point.weight = g.w * triangle_area;
               points.push_back(point);
@@ -446,14 +458,142 @@ namespace DuctileContact
     });
     return points;
   }
+#else
+  namespace
+  {
+    /// One overlap of a slave and a master sub-segment, along the
+    /// auxiliary line of the slave sub-segment (mortar_points()).
+    template <typename Number>
+    struct SubSegmentOverlap
+    {
+      unsigned int slave_segment, master_segment;
+      Vec<Number>  centre, n0, t1;
+      /// The overlap is centre + [lo, hi] t1.
+      Number lo, hi;
+    };
+
+    /**
+     * The plane-strain counterpart of the 3-D clipping: both line3 faces
+     * are split into their two straight sub-segments; for each slave
+     * sub-segment an auxiliary line through its centre, along its chord t1
+     * with normal n0 = t1 turned by -90 degrees (outward); the ends of
+     * every master sub-segment that faces it are projected onto the line
+     * and the two intervals intersected. Calls @p visit for every
+     * overlap until it returns false.
+     */
+    template <typename Number, typename Visitor>
+    void
+    for_each_overlap(const FaceCoordinates<Number> &slave,
+                     const FaceCoordinates<Number> &master,
+                     const Visitor                 &visit)
+    {
+      // Decided on the values first, as in 3-D.
+      std::array<bool, 4> overlaps;
+      overlaps.fill(true);
+      if constexpr (!std::is_same_v<Number, double>)
+        {
+          overlaps.fill(false);
+          for_each_overlap(coordinates_of(values_of(slave)),
+                           coordinates_of(values_of(master)),
+                           [&](const SubSegmentOverlap<double> &o) {
+                             overlaps[2 * o.slave_segment + o.master_segment] =
+                               true;
+                             return true;
+                           });
+        }
+      SubSegmentOverlap<Number> o;
+      for (unsigned int ss = 0; ss < 2; ++ss)
+        {
+          if (!overlaps[2 * ss] && !overlaps[2 * ss + 1])
+            continue;
+          const Vec<Number> &a = slave[ss], &b = slave[ss + 1];
+          o.slave_segment = ss;
+          for (unsigned int c = 0; c < dim; ++c)
+            o.centre[c] = 0.5 * a[c] + 0.5 * b[c];
+          o.t1                  = minus(b, a);
+          const double s_length = std::sqrt(value_of(dot(o.t1, o.t1)));
+          if (!(s_length > 0.))
+            continue; // degenerate slave sub-segment
+          normalise(o.t1);
+          o.n0              = turned(o.t1);
+          const Number s_lo = dot(minus(a, o.centre), o.t1);
+          const Number s_hi = dot(minus(b, o.centre), o.t1);
+          // A master end within eps of a slave end counts as on it (the
+          // flush ends of a patch test), as a vertex on a clipping line in
+          // 3-D.
+          const double eps = 1e-10 * s_length;
+          for (unsigned int ms = 0; ms < 2; ++ms)
+            {
+              if (!overlaps[2 * ss + ms])
+                continue;
+              const Vec<Number> &p = master[ms], &q = master[ms + 1];
+              if (value_of(dot(turned(minus(q, p)), o.n0)) >= 0.)
+                continue; // the sub-segments do not face each other
+              // The master runs the other way along t1.
+              const Number m_lo = dot(minus(q, o.centre), o.t1);
+              const Number m_hi = dot(minus(p, o.centre), o.t1);
+              o.lo = value_of(m_lo) >= value_of(s_lo) - eps ? m_lo : s_lo;
+              o.hi = value_of(m_hi) <= value_of(s_hi) + eps ? m_hi : s_hi;
+              if (!(value_of(o.hi) - value_of(o.lo) > 1e-12 * s_length))
+                continue;
+              o.master_segment = ms;
+              if (!visit(o))
+                return;
+            }
+        }
+    }
+  } // namespace
+
+
+
+  template <typename Number>
+  std::vector<MortarPointOf<Number>>
+  mortar_points(const FaceCoordinates<Number> &slave,
+                const FaceCoordinates<Number> &master)
+  {
+    // Five Gauss points per overlap: exact for the product of two line3
+    // shape functions (degree 4) where the faces are straight, with margin
+    // for curved ones.
+    static const QGauss<1> gauss(5);
+    const ContactFace      slave_face = values_of(slave),
+                      master_face     = values_of(master);
+    std::vector<MortarPointOf<Number>> points;
+    for_each_overlap(slave, master, [&](const SubSegmentOverlap<Number> &o) {
+      const FaceParameter s_start(0.25 + 0.5 * o.slave_segment);
+      const FaceParameter m_start(0.25 + 0.5 * o.master_segment);
+      const Number        length = o.hi - o.lo;
+      for (unsigned int g = 0; g < gauss.size(); ++g)
+        {
+          const Number along = o.lo + gauss.point(g)[0] * length;
+          Vec<Number>  q;
+          for (unsigned int c = 0; c < dim; ++c)
+            q[c] = o.centre[c] + along * o.t1[c];
+          MortarPointOf<Number> point;
+          if (!project(slave, 0, slave_face, q, o.n0, s_start, point.slave) ||
+              !project(master,
+                       face_coordinates,
+                       master_face,
+                       q,
+                       o.n0,
+                       m_start,
+                       point.master))
+            continue;
+          point.weight = gauss.weight(g) * length;
+          points.push_back(point);
+        }
+      return true;
+    });
+    return points;
+  }
+#endif
 
 
 
   FaceCoordinates<double>
-  coordinates_of(const Quad9 &face)
+  coordinates_of(const ContactFace &face)
   {
     FaceCoordinates<double> x;
-    for (unsigned int i = 0; i < 9; ++i)
+    for (unsigned int i = 0; i < face_nodes; ++i)
       for (unsigned int c = 0; c < dim; ++c)
         x[i][c] = face.x[i][c];
     return x;
@@ -462,12 +602,12 @@ namespace DuctileContact
 
 
   bool
-  faces_may_overlap(const Quad9 &slave, const Quad9 &master)
+  faces_may_overlap(const ContactFace &slave, const ContactFace &master)
   {
     bool found = false;
     for_each_overlap(coordinates_of(slave),
                      coordinates_of(master),
-                     [&](const SubQuadOverlap<double> &) {
+                     [&](const auto &) {
                        found = true;
                        return false;
                      });
@@ -477,14 +617,21 @@ namespace DuctileContact
 
 
   std::vector<MortarPoint>
-  mortar_points(const Quad9 &slave, const Quad9 &master)
+  mortar_points(const ContactFace &slave, const ContactFace &master)
   {
     std::vector<MortarPoint> points;
     for (const auto &p :
          mortar_points(coordinates_of(slave), coordinates_of(master)))
-      points.push_back({Point<2>(p.slave[0], p.slave[1]),
-                        Point<2>(p.master[0], p.master[1]),
-                        p.weight});
+      {
+        MortarPoint point;
+        for (unsigned int k = 0; k + 1 < dim; ++k)
+          {
+            point.slave[k]  = p.slave[k];
+            point.master[k] = p.master[k];
+          }
+        point.weight = p.weight;
+        points.push_back(point);
+      }
     return points;
   }
 

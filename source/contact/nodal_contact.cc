@@ -16,7 +16,10 @@ namespace DuctileContact
     using AD       = Sacado::Fad::SFad<double, 10>;
     using V        = std::array<AD, dim>;
     const auto dot = [](const V &x, const V &y) -> AD {
-      return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+      if constexpr (dim == 3)
+        return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+      else
+        return x[0] * y[0] + x[1] * y[1];
     };
 
     const AD A(10, 0, a.area);

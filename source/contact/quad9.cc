@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+// Empty in the plane-strain build (quad9.h).
+#if DUCTILE_CONTACT_DIM == 3
 namespace DuctileContact
 {
   using namespace dealii;
@@ -151,3 +153,4 @@ namespace DuctileContact
     return false;
   }
 } // namespace DuctileContact
+#endif

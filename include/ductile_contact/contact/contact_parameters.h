@@ -46,7 +46,7 @@ namespace DuctileContact
    * One contact pair, subsection `Contact pair <n>` (doc/model.md section 5,
    * doc/contact.md). The slave side carries the nodal contact pressures and the
    * integration; make it the finer of the two meshes. Both surfaces must be
-   * boundaries of FE_Q(2) bodies (quad9 faces).
+   * boundaries of FE_Q(2) bodies (quad9 faces; line3 in plane strain).
    *
    * Enforcement (ContactEnforcement):
    * - augmented Lagrangian on the nodal weighted gaps: lambda_j = max(0,

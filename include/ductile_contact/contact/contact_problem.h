@@ -57,8 +57,8 @@ namespace DuctileContact
    * surfaces.
    *
    * Discretisation: dual (biorthogonal) multiplier basis Phi_j on the slave
-   * quad9 faces (or the standard Phi_j = N_j), segment-based integration
-   * (mortar_points()) on the current geometry of
+   * faces (quad9, line3; or the standard Phi_j = N_j), segment-based
+   * integration (mortar_points()) on the current geometry of
    *
    *   D_jk = int Phi_j N_k dA,  M_jl = int Phi_j (N_l o chi) dA,
    *   A_j = sum_k D_jk,  g_j = n_j . (sum_l M_jl x_l - sum_k D_jk x_k),
@@ -224,7 +224,7 @@ namespace DuctileContact
      * mesh, which refinement carries exactly); a slave node that existed
      * before keeps its multiplier and tangential traction, a new one (on a
      * refined slave face) gets them interpolated on the old face that
-     * contains it (quad9 shape functions at its reference position); the
+     * contains it (face shape functions at its reference position); the
      * dissipation so far and the output series carry over.
      */
     void
@@ -283,7 +283,7 @@ namespace DuctileContact
       std::vector<double> multiplier, committed_multiplier;
       // Of the last assembly:
       /// Current slave faces.
-      std::vector<Quad9> slave_faces;
+      std::vector<ContactFace> slave_faces;
       /// (slave face, master face) pairs that overlap.
       std::vector<std::pair<unsigned int, unsigned int>> overlaps;
       /// Whether integrate() kept derivatives: then this rank's share of

@@ -4,7 +4,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
-#include <ductile_contact/contact/quad9.h>
+#include <ductile_contact/contact/contact_face.h>
 #include <ductile_contact/discretisation/discretisation.h>
 
 #include <array>
@@ -15,13 +15,14 @@ namespace DuctileContact
 {
   /**
    * The faces of one boundary id, replicated on every MPI rank: quad9 faces
-   * (FE_Q(2) displacement) with their nodes' global DoF indices, reference
-   * and current positions.
+   * in 3-D, line3 faces in plane strain (FE_Q(2) displacement;
+   * ContactFace), with their nodes' global DoF indices, reference and
+   * current positions.
    *
    * How the data moves: gather() all-gathers the faces of the locally owned
    * cells once per DoF distribution (connectivity, DoF indices, reference
    * positions); update() then sums the current positions of the nodes each
-   * rank owns into one array of 3 x (number of surface nodes) doubles with
+   * rank owns into one array of dim x (number of surface nodes) doubles with
    * an all-reduce, once per Newton iteration. Memory and traffic per rank
    * grow with the size of the contact surface, not with the mesh, which is
    * fine while surfaces have up to some 10^5 faces; beyond that the
@@ -43,8 +44,9 @@ namespace DuctileContact
     };
     struct Face
     {
-      std::array<unsigned int, 9> nodes; ///< Quad9 order, outward normal
-      dealii::types::material_id  material_id;
+      std::array<unsigned int, face_nodes> nodes; ///< ContactFace order,
+                                                  ///< outward normal
+      dealii::types::material_id material_id;
     };
 
     dealii::types::boundary_id boundary_id = 0;
@@ -70,7 +72,7 @@ namespace DuctileContact
     update(const dealii::TrilinosWrappers::MPI::BlockVector &u,
            const Discretisation                             &discretisation);
 
-    Quad9
+    ContactFace
     current_face(const unsigned int f) const;
 
     /// Smallest distance between two nodes of a face (reference) [m].

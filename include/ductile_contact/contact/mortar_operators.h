@@ -1,17 +1,12 @@
 #pragma once
 
-#include <ductile_contact/contact/quad9.h>
+#include <ductile_contact/contact/contact_face.h>
 
 #include <array>
 #include <memory>
 
 namespace DuctileContact
 {
-  /// Number of derivative directions of a face pair: the current
-  /// coordinates of the 9 slave nodes (3 i + c) and of the 9 master nodes
-  /// (27 + 3 i + c).
-  constexpr unsigned int face_pair_coordinates = 54;
-
   /// Which slave weights a face pair's D holds.
   enum class SlaveWeights
   {
@@ -25,27 +20,32 @@ namespace DuctileContact
   };
 
   /// The mortar operators of one slave/master face pair and, on request,
-  /// their derivatives with respect to the 54 face coordinates.
+  /// their derivatives with respect to the face pair's coordinates
+  /// (face_pair_coordinates: 54 | 12).
   struct FacePairOperators
   {
     /// D_ik = int Phi_i N_k dA, M_il = int Phi_i (N_l o chi) dA over the
     /// overlap (i, k slave nodes, l master nodes) [m^2]; D as SlaveWeights
     /// says.
-    std::array<std::array<double, 9>, 9> D, M;
+    std::array<std::array<double, face_nodes>, face_nodes> D, M;
     /// dD_ik / dX_a and dM_il / dX_a [m].
-    std::array<std::array<std::array<double, face_pair_coordinates>, 9>, 9> dD,
-      dM;
+    std::array<
+      std::array<std::array<double, face_pair_coordinates>, face_nodes>,
+      face_nodes>
+      dD, dM;
   };
 
   /**
-   * The multiplier basis Phi_i = sum_k a_ik N_k of one slave quad9 face and
+   * The multiplier basis Phi_i = sum_k a_ik N_k of one slave face and
    * its mortar operators with any master face (mortar_points()).
    *
    * Dual (biorthogonal) basis (Wohlmuth 2000): int Phi_i N_k dA = delta_ik
    * int N_k dA over the face, i.e. a = D_e M_e^-1 with the face's mass
-   * matrix M_e and D_e = diag(int N_i dA) (positive for quad9, so no basis
-   * transformation is needed); sum_i Phi_i = 1, so uniform pressures are
-   * still represented exactly. Standard basis: a = I.
+   * matrix M_e and D_e = diag(int N_i dA) (positive for quad9 and for every
+   * valid line3: (4 beta - 1) L/6, 2L/3, (3 - 4 beta) L/6 with the middle
+   * node at beta of the chord L, so no basis transformation is needed); sum_i
+   * Phi_i = 1, so uniform pressures are still represented exactly. Standard
+   * basis: a = I.
    *
    * The operators are accumulated as D = a Dhat, M = a Mhat with Dhat_mk =
    * int N_m N_k, Mhat_ml = int N_m (N_l o chi): the basis is applied once
@@ -61,14 +61,14 @@ namespace DuctileContact
   class MortarFace
   {
   public:
-    MortarFace(const Quad9       &slave,
+    MortarFace(const ContactFace &slave,
                const bool         dual,
                const SlaveWeights weights = SlaveWeights::full);
 
     /// Operators of this face with @p master; false when the faces do not
     /// overlap (then @p out is not touched).
     bool
-    integrate(const Quad9       &master,
+    integrate(const ContactFace &master,
               FacePairOperators &out,
               const bool         derivatives) const;
 
@@ -76,10 +76,10 @@ namespace DuctileContact
     /// The basis coefficients a_ik with their derivatives (ContactAD).
     struct BasisDerivatives;
 
-    Quad9                                slave;
-    bool                                 dual;
-    SlaveWeights                         weights;
-    std::array<std::array<double, 9>, 9> coefficients;
+    ContactFace                                            slave;
+    bool                                                   dual;
+    SlaveWeights                                           weights;
+    std::array<std::array<double, face_nodes>, face_nodes> coefficients;
     /// Made by the first integrate() with derivatives and kept for the
     /// face's other pairs: they depend on the slave face alone.
     mutable std::shared_ptr<const BasisDerivatives> basis_derivatives;

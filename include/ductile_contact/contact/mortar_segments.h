@@ -2,25 +2,25 @@
 
 #include <deal.II/base/point.h>
 
-#include <ductile_contact/contact/quad9.h>
+#include <ductile_contact/contact/contact_face.h>
 
 #include <array>
 #include <vector>
 
 namespace DuctileContact
 {
-  /// Current coordinates x_i[c] of the nine nodes of a quad9 face (node
-  /// order of Quad9), in a number type that may carry derivatives.
+  /// Current coordinates x_i[c] of the nodes of a face (node order of
+  /// ContactFace), in a number type that may carry derivatives.
   template <typename Number>
-  using FaceCoordinates = std::array<std::array<Number, dim>, 9>;
+  using FaceCoordinates = std::array<std::array<Number, dim>, face_nodes>;
 
   /// One integration point of a slave/master face pair.
   template <typename Number>
   struct MortarPointOf
   {
-    std::array<Number, 2> slave;  ///< parameter point on the slave face
-    std::array<Number, 2> master; ///< parameter point on the master face
-    Number                weight; ///< area weight [m^2]
+    std::array<Number, dim - 1> slave;  ///< parameter point on the slave face
+    std::array<Number, dim - 1> master; ///< parameter point on the master face
+    Number weight; ///< area weight [m^2] (length [m] in 2-D)
   };
 
   /**
@@ -37,15 +37,24 @@ namespace DuctileContact
    * integrated over the same overlap on both sides: this is what makes the
    * patch test pass.
    *
+   * In plane strain the faces are line3: both are split into their two
+   * straight sub-segments; for each slave sub-segment an auxiliary line
+   * through its centre along its chord, normal n0 = the chord turned by -90
+   * degrees; the ends of every master sub-segment that faces it are
+   * projected onto the line, the two intervals intersected, and a 5-point
+   * Gauss rule on the overlap projected back along n0. The weights are
+   * lengths on the line.
+   *
    * A pure function of the two current face geometries. With Number =
    * ContactAD (contact_ad.h) the points and weights carry their derivatives
-   * with respect to the 54 face coordinates: the branches (which sub-quads
-   * face each other, which polygon vertices are clipped) are decided on the
-   * values, the Newton back-projection runs on the values and one final
+   * with respect to the face coordinates (54 | 12): the branches (which
+   * sub-quads face each other, which polygon vertices are clipped) are decided
+   * on the values, the Newton back-projection runs on the values and one final
    * Newton correction in ContactAD gives the derivatives of the parameter
    * points by the implicit function theorem. With ContactAD the face
    * coordinates must be the independent variables themselves: slave[i][c]
-   * direction 3 i + c, master[i][c] direction 27 + 3 i + c (as
+   * direction dim i + c, master[i][c] direction face_coordinates + dim i + c
+   * (as
    * MortarFace::integrate() seeds them). Instantiated for double and
    * ContactAD.
    */
@@ -56,23 +65,23 @@ namespace DuctileContact
 
   /// The node coordinates of @p face as FaceCoordinates.
   FaceCoordinates<double>
-  coordinates_of(const Quad9 &face);
+  coordinates_of(const ContactFace &face);
 
   /// Whether some sub-quads of the two faces face each other and overlap
   /// in the plane (the clipping of mortar_points() without its
   /// quadrature): false means mortar_points() has no point.
   bool
-  faces_may_overlap(const Quad9 &slave, const Quad9 &master);
+  faces_may_overlap(const ContactFace &slave, const ContactFace &master);
 
   /// mortar_points() on plain faces.
   struct MortarPoint
   {
-    dealii::Point<2> slave;  ///< parameter point on the slave face
-    dealii::Point<2> master; ///< parameter point on the master face
-    double           weight; ///< area weight [m^2]
+    FaceParameter slave;  ///< parameter point on the slave face
+    FaceParameter master; ///< parameter point on the master face
+    double        weight; ///< area weight [m^2] (length [m] in 2-D)
   };
   std::vector<MortarPoint>
-  mortar_points(const Quad9 &slave, const Quad9 &master);
+  mortar_points(const ContactFace &slave, const ContactFace &master);
 
   /// Area of the overlap of a convex polygon pair in the plane (tested
   /// helper of mortar_points()): Sutherland-Hodgman clip of @p subject by

@@ -7,6 +7,9 @@
 
 #include <array>
 
+// The contact faces of the 3-D build; the plane-strain build's are Line3
+// (contact_face.h).
+#if DUCTILE_CONTACT_DIM == 3
 namespace DuctileContact
 {
   /**
@@ -18,6 +21,19 @@ namespace DuctileContact
    */
   struct Quad9
   {
+    /// Number of nodes; the centre node (a, b) = (1, 1); the vertices in
+    /// deal.II's order.
+    static constexpr unsigned int                n_nodes     = 9;
+    static constexpr unsigned int                centre_node = 4;
+    static constexpr std::array<unsigned int, 4> vertices{{0, 2, 6, 8}};
+
+    /// Parameter point of the centre.
+    static dealii::Point<2>
+    centre()
+    {
+      return {0.5, 0.5};
+    }
+
     std::array<dealii::Point<dim>, 9> x;
 
     /// Lagrange shape functions N_i(xi, eta) and their derivatives.
@@ -79,3 +95,4 @@ namespace DuctileContact
     }
   };
 } // namespace DuctileContact
+#endif

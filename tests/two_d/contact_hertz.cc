@@ -1,0 +1,159 @@
+// Hertz line contact in plane strain (Dimension = 2, line3 contact faces):
+// the scene of tests/contact_hertz (a cylinder, R = 1 m, pressed onto a
+// flat foundation of the same material, E = 1 GPa, nu = 0.3, half model,
+// the indenter's top pushed down by 2e-4 m in one step, frictionless, dual
+// multipliers) on the 2-D mesh tests/meshes/hertz_h4_2d.msh
+// (`make_hertz.py 1 0.01 4 0.3 hertz_h4_2d.msh 2d`: h = a/4 at the
+// contact), with both enforcements:
+//  - semi-smooth Newton (the default) and the augmented Lagrangian each
+//    give a and p0 of the pressure fit (p^2 = p0^2 (1 - x^2/a^2) at
+//    x <= 0.8 a) within 8 % and 5 % of Hertz for the carried load P per
+//    unit length;
+//  - the slab of tests/contact_hertz is this plane-strain problem (one
+//    layer with u_z = 0 on both faces): P, a and p0 equal the slab's
+//    39817 N/m, 0.0099828 m and 2.7273e6 Pa to 1e-4;
+//  - the contact force balances the reaction on the top face, the
+//    penetration is below 1e-6 h (augmented Lagrangian: its tolerance),
+//    and the contact tangent (Newton/Check tangent) matches central
+//    differences of the residual.
+// The compared output holds P, a and p0 at 5 significant digits.
+#include "../tests.h"
+
+#include <cmath>
+
+using namespace dealii;
+
+namespace
+{
+  std::string
+  hertz_2d_prm(const std::string &enforcement)
+  {
+    const std::string material = R"(
+  set Shear modulus = 3.846153846153846e8
+  set Bulk modulus  = 8.333333333333334e8
+end
+)";
+    return R"(
+set Dimension = 2
+subsection Mesh
+  set Scene = gmsh
+  subsection Gmsh
+    set File name = )" SOURCE_DIR R"(/meshes/hertz_h4_2d.msh
+  end
+end
+subsection Bodies
+  set Material ids = 1, 2
+end
+subsection Body 1)" +
+           material + "subsection Body 2" + material + R"(
+subsection Contact
+  set Pairs = 1
+end
+subsection Contact pair 1
+  set Slave boundary id  = 4
+  set Master boundary id = 3
+)" + enforcement +
+           R"(end
+subsection Boundary conditions
+  set Boundary ids = 1, 2, 5
+end
+subsection Boundary 1
+  set Constrained components = y
+end
+subsection Boundary 2
+  set Constrained components = y
+  set Displacement           = 0; -2e-4*t
+end
+subsection Boundary 5
+  set Constrained components = x
+end
+subsection Load stepping
+  set End time  = 1
+  set Time step = 1
+end
+subsection Linear solver
+  set Type = direct
+end
+subsection Newton
+  set Check tangent = true
+end
+subsection Output
+  set Interval = 1
+end
+)";
+  }
+
+  struct Result
+  {
+    double a_error, p0_error, balance, penetration, tangent_error;
+    /// Load per unit length, half-width and peak pressure of the fit.
+    double P, a, p0;
+  };
+
+  Result
+  run(const std::string &name, const std::string &enforcement)
+  {
+    const auto   stats = Testing::run_scene(hertz_2d_prm(enforcement), name);
+    const auto   nodes = Testing::read_statistics(name + "/contact1_00001.txt");
+    const auto  &x = nodes.at("x"), &p = nodes.at("pressure");
+    const double E = 1e9, nu = 0.3, R = 1.;
+    const double E_star = E / (2. * (1. - nu * nu));
+    const double F      = stats.at("F2_y").back(); // per unit thickness
+    const double P      = 2. * std::abs(F);
+    const double a_h    = std::sqrt(4. * P * R / (M_PI * E_star));
+    const double p0_h   = 2. * P / (M_PI * a_h);
+    std::vector<double> x2(x.size());
+    for (unsigned int i = 0; i < x.size(); ++i)
+      x2[i] = x[i] * x[i];
+    const auto [a, p0] =
+      Testing::fit_hertz_pressure(x2, p, std::pow(0.8 * a_h, 2));
+    std::cout << name << ": P " << P << ", a " << a << " (Hertz " << a_h
+              << "), p0 " << p0 << " (Hertz " << p0_h << "), tangent error "
+              << stats.at("tangent_error").back() << std::endl;
+    return {std::abs(a / a_h - 1.),
+            std::abs(p0 / p0_h - 1.),
+            std::abs(F - stats.at("contact1_force_y").back()) / std::abs(F),
+            stats.at("contact1_max_penetration").back(),
+            stats.at("tangent_error").back(),
+            P,
+            a,
+            p0};
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::ofstream                    out = Testing::open_output();
+
+  const double slab_P = 39817, slab_a = 0.0099828, slab_p0 = 2.7273e6;
+  for (const auto &[name, enforcement] :
+       {std::pair<std::string, std::string>{"semi_smooth", ""},
+        std::pair<std::string, std::string>{
+          "augmented",
+          "  set Enforcement = augmented Lagrangian\n"
+          "  set Penetration tolerance = 1e-8\n"}})
+    {
+      const Result r = run("hertz_2d_" + name, enforcement);
+      out << name
+          << ": a within 8 % of Hertz: " << Testing::yes_no(r.a_error < 0.08)
+          << std::endl
+          << name
+          << ": p0 within 5 % of Hertz: " << Testing::yes_no(r.p0_error < 0.05)
+          << std::endl
+          << name << ": P, a, p0 equal the slab's (1e-4): "
+          << Testing::yes_no(std::abs(r.P / slab_P - 1.) < 1e-4 &&
+                             std::abs(r.a / slab_a - 1.) < 1e-4 &&
+                             std::abs(r.p0 / slab_p0 - 1.) < 1e-4)
+          << std::endl
+          << name << ": contact force balances the reaction (1e-6): "
+          << Testing::yes_no(r.balance < 1e-6) << std::endl
+          << name << ": penetration below 1e-6 h: "
+          << Testing::yes_no(r.penetration < 1e-6 * 0.0025) << std::endl
+          << name << ": consistent tangent (1e-6): "
+          << Testing::yes_no(r.tangent_error < 1e-6) << std::endl
+          << std::setprecision(5) << name << ": P " << r.P << " N/m, a " << r.a
+          << " m, p0 " << r.p0 << " Pa" << std::endl;
+    }
+}
