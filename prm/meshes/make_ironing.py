@@ -13,9 +13,11 @@ Physical tags: surfaces 1 slab bottom, 2 die top, 3 slab top (slave),
 4 die bottom (master), 5 the slab faces z = 0 and z = T_Z of both bodies,
 6 the remaining sides (free).
 
-Usage: make_ironing.py H_SLAB H_DIE OUTPUT.msh
+Usage: make_ironing.py H_SLAB H_DIE OUTPUT.msh [2d]
        (L = 0.06, D = 0.006, R = 0.03, W = 0.01, X0 = 0.02, HD = 0.01,
        T_Z = H_DIE)
+With the last argument 2d the mesh is plane (Dimension = 2): quadrilaterals
+with boundary lines of the same tags (no 5).
 """
 import math
 import sys
@@ -26,7 +28,8 @@ h_slab = float(sys.argv[1]) if len(sys.argv) > 1 else 0.001
 h_die = float(sys.argv[2]) if len(sys.argv) > 2 else 0.002
 out = sys.argv[3] if len(sys.argv) > 3 else "ironing.msh"
 L, D, R, W, X0, HD = 0.06, 0.006, 0.03, 0.01, 0.02, 0.01
-zs = [0.0, h_die]
+two_d = len(sys.argv) > 4 and sys.argv[4] == "2d"
+zs = None if two_d else [0.0, h_die]
 nodes, elements = [], []
 
 
@@ -54,10 +57,15 @@ body(divide(X0 - W, X0 + W, h_die),
      [(lambda x, s=s: bottom(x) + s * (HD - bottom(x))) for s in divide(0.0, 1.0, h_die / HD)],
      2, 4, 2)
 
-write_gmsh(out,
-           [(2, 1, "slab bottom"), (2, 2, "die top"), (2, 3, "slab top"),
-            (2, 4, "die bottom"), (2, 5, "slab faces"), (2, 6, "sides"),
-            (3, 1, "slab"), (3, 2, "die")],
-           nodes, elements)
-print(f"{out}: {sum(1 for e in elements if e[0] == 5)} hexahedra "
+if two_d:
+    names = [(1, 1, "slab bottom"), (1, 2, "die top"), (1, 3, "slab top"),
+             (1, 4, "die bottom"), (1, 6, "sides"), (2, 1, "slab"), (2, 2, "die")]
+else:
+    names = [(2, 1, "slab bottom"), (2, 2, "die top"), (2, 3, "slab top"),
+             (2, 4, "die bottom"), (2, 5, "slab faces"), (2, 6, "sides"),
+             (3, 1, "slab"), (3, 2, "die")]
+write_gmsh(out, names, nodes, elements)
+cell = 3 if two_d else 5
+print(f"{out}: {sum(1 for e in elements if e[0] == cell)} "
+      f"{'quadrilaterals' if two_d else 'hexahedra'} "
       f"(slab h = {h_slab:g} m, die h = {h_die:g} m)")

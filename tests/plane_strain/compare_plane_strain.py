@@ -7,9 +7,9 @@ The plane-strain discrete problem is the slab's restricted to fields that do
 not depend on z, and the slab's solution is such a field (the problem is
 symmetric in z), so the two runs must agree to the solvers' tolerance:
 every column of PLANE that SLAB has too, the slab's forces, energies and
-works and momenta divided by THICKNESS (2-D gives them per unit thickness), to 1e-6 of
+works, momenta and areas divided by THICKNESS (2-D gives them per unit thickness), to 1e-6 of
 the column family's scale (tests/checkpoint/compare_statistics.py; the
-solver's work, the timings and the numbers of DoFs are not compared). Exits 1 when they do not, or
+solver's work, the timings, the numbers of DoFs and of contact nodes are not compared). Exits 1 when they do not, or
 when the steps differ.
 
 Prints the QOI columns of PLANE (default: none) at the first step, the step
@@ -24,7 +24,9 @@ from compare_statistics import (DEFAULT_TOLERANCE, NOT_COMPARED, TOLERANCE,
                                 family, read)
 
 PER_THICKNESS = {"force", "energy", "momentum"}
-# Sizes of the discretisation: the slab has its third direction.
+# Sizes of the discretisation: the slab has its third direction (and three
+# Q2 nodes across its thickness for each node of the plane: the contact
+# node counts, columns ending in _nodes).
 SIZES = {"dofs", "cells", "active_cells"}
 
 
@@ -46,7 +48,7 @@ def main():
         v = row[column[name]]
         # Totals are per unit thickness in 2-D; extrema of point values
         # (min_plastic_dissipation [J/m^3], ...) are not totals.
-        total = (family(name) in PER_THICKNESS
+        total = ((family(name) in PER_THICKNESS or name.endswith("_area"))
                  and not name.startswith(("min_", "max_")))
         return v / thickness if total else v
 
@@ -56,7 +58,7 @@ def main():
         scale[family(name)] = max(scale.get(family(name), 0.), top)
     worst, where = 0., ""
     for k, name in enumerate(head):
-        if name in NOT_COMPARED or name in SIZES:
+        if name in NOT_COMPARED or name in SIZES or name.endswith("_nodes"):
             continue
         s = scale[family(name)] or 1.
         allowed = TOLERANCE.get(family(name), DEFAULT_TOLERANCE)
