@@ -60,6 +60,9 @@ quantities = {
                     "benchmarks/adaptive_refinement/pfm_cracks/runs/"
                     "ours-at2-g4 (611.26 N/mm; pfm-cracks' energies give "
                     "611.9)"),
+    "block_on_strip_2d": ("F2_y at 16.95 mm [N/m]", last("F2_y"), -53965., 1e-3,
+                          "the scene's run of 2026-12-06 (its header; energy "
+                          "residual 6e-5 of W_ext at the end)"),
     "sent_coarse": ("F_max = max |F2_y| [N]", largest("F2_y"), 13.0138, 1e-3,
                     "0.52055 kN/mm x 0.025 mm, benchmarks/phase_field/"
                     "sent_scene"),

@@ -121,26 +121,32 @@ namespace DuctileContact
     prm.add_parameter(
       "Plate size",
       two_bodies.plate_size,
-      "Plate [0,Lx]x[0,Ly]x[0,Lz] [m]. Boundary ids: 1 = clamped face x = Lx, "
-      "3 = top face z = Lz (contact surface of the plate), 0 = other plate "
-      "faces; block: 2 = top face, 4 = bottom face (contact surface of the "
-      "block), 5 = its side faces. Material ids: 0 = plate, 1 = block.");
+      "Plate [0,Lx]x[0,Ly]x[0,Lz] [m] ([0,Lx]x[0,Ly] in 2-D, the block "
+      "above y = Ly). Boundary ids: 1 = clamped face x = Lx, 3 = top face "
+      "z = Lz (y = Ly in 2-D; contact surface of the plate), 0 = other "
+      "plate faces; block: 2 = top face, 4 = bottom face (contact surface "
+      "of the block), 5 = its side faces. Material ids: 0 = plate, 1 = "
+      "block.");
     prm.add_parameter("Plate subdivisions",
                       two_bodies.plate_subdivisions,
-                      "Number of coarse plate cells along x, y, z.",
-                      Patterns::List(Patterns::Integer(1), 3, 3, ","));
+                      "Number of coarse plate cells along x, y, z (x, y in "
+                      "2-D).",
+                      Patterns::List(Patterns::Integer(1), dim, dim, ","));
     prm.add_parameter("Block edge",
                       two_bodies.block_edge,
-                      "Edge length of the cubic block [m].",
+                      "Edge length of the cubic (square in 2-D) block [m].",
                       Patterns::Double(0.));
     prm.add_parameter("Block subdivisions",
                       two_bodies.block_subdivisions,
-                      "Number of coarse block cells along x, y, z.",
-                      Patterns::List(Patterns::Integer(1), 3, 3, ","));
-    prm.add_parameter("Block centre",
-                      two_bodies.block_centre,
-                      "In-plane position (x, y) of the block's centre [m].",
-                      Patterns::List(Patterns::Double(), 2, 2, ","));
+                      "Number of coarse block cells along x, y, z (x, y in "
+                      "2-D).",
+                      Patterns::List(Patterns::Integer(1), dim, dim, ","));
+    prm.add_parameter(
+      "Block centre",
+      two_bodies.block_centre,
+      "In-plane position (x, y) of the block's centre [m] "
+      "(x in 2-D).",
+      Patterns::List(Patterns::Double(), dim - 1, dim - 1, ","));
     prm.add_parameter("Block gap",
                       two_bodies.block_gap,
                       "Distance between the plate's top face and the block's "
@@ -295,12 +301,11 @@ namespace DuctileContact
                       Utilities::to_string(box.lower_corner[d]) +
                       ") in every coordinate");
 
-    check_input(dim == 3 || (scene != SceneType::two_bodies &&
-                             scene != SceneType::round_bar),
+    check_input(dim == 3 || scene != SceneType::round_bar,
                 "Mesh/Scene",
                 name_of(scene_names(), scene),
-                "'two bodies' and 'round bar' are three-dimensional scenes; "
-                "with Dimension = 2 use 'box' or 'gmsh'");
+                "'round bar' is a three-dimensional scene; with Dimension = 2 "
+                "use 'box', 'two bodies' or 'gmsh'");
 
     if (scene == SceneType::two_bodies)
       {

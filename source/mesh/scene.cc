@@ -44,12 +44,11 @@ namespace DuctileContact
         create_box_scene(parameters.box, tria);
         break;
       case SceneType::two_bodies:
+        create_two_body_scene(parameters.two_bodies, tria);
+        break;
       case SceneType::round_bar:
 #if DUCTILE_CONTACT_DIM == 3
-        if (parameters.scene == SceneType::two_bodies)
-          create_two_body_scene(parameters.two_bodies, tria);
-        else
-          create_round_bar_scene(parameters.round_bar, tria);
+        create_round_bar_scene(parameters.round_bar, tria);
         break;
 #else
         // Refused by MeshParameters::check().

@@ -2,9 +2,6 @@
 
 #include <ductile_contact/mesh/scene.h>
 
-// A three-dimensional scene: MeshParameters::check() refuses it in the
-// plane-strain build, which therefore has no builder for it.
-#if DUCTILE_CONTACT_DIM == 3
 namespace DuctileContact
 {
   using namespace dealii;
@@ -12,10 +9,11 @@ namespace DuctileContact
   namespace
   {
     /**
-     * Appends a brick of n[0] x n[1] x n[2] hexahedra to a raw cell list.
-     * Each brick gets its own vertices, so two bricks never share a vertex
-     * even where their faces touch: the bodies stay disconnected (contact,
-     * not glue, couples them).
+     * Appends a brick of n[0] x n[1] x n[2] hexahedra (n[0] x n[1]
+     * quadrilaterals in 2-D) to a raw cell list. Each brick gets its own
+     * vertices, so two bricks never share a vertex even where their faces
+     * touch: the bodies stay disconnected (contact, not glue, couples
+     * them).
      */
     void
     append_brick(const Point<dim>                &lower,
@@ -26,12 +24,14 @@ namespace DuctileContact
                  std::vector<CellData<dim>>      &cells)
     {
       const unsigned int offset = vertices.size();
-      for (unsigned int k = 0; k <= n[2]; ++k)
+      // Points and cells along z: one layer of neither in 2-D.
+      const unsigned int nz = dim == 3 ? n[dim - 1] : 0;
+      for (unsigned int k = 0; k <= nz; ++k)
         for (unsigned int j = 0; j <= n[1]; ++j)
           for (unsigned int i = 0; i <= n[0]; ++i)
             {
-              const std::array<unsigned int, dim> index{{i, j, k}};
-              Point<dim>                          p;
+              const std::array<unsigned int, 3> index{{i, j, k}};
+              Point<dim>                        p;
               for (unsigned int d = 0; d < dim; ++d)
                 p[d] = lower[d] + (upper[d] - lower[d]) * index[d] / n[d];
               vertices.push_back(p);
@@ -40,12 +40,12 @@ namespace DuctileContact
         [&](const unsigned int i, const unsigned int j, const unsigned int k) {
           return offset + i + (n[0] + 1) * (j + (n[1] + 1) * k);
         };
-      for (unsigned int k = 0; k < n[2]; ++k)
+      for (unsigned int k = 0; k < std::max(nz, 1u); ++k)
         for (unsigned int j = 0; j < n[1]; ++j)
           for (unsigned int i = 0; i < n[0]; ++i)
             {
               CellData<dim> cell;
-              // deal.II's lexicographic vertex order: v = a + 2b + 4c.
+              // deal.II's lexicographic vertex order: v = a + 2b (+ 4c).
               for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell;
                    ++v)
                 cell.vertices[v] =
@@ -62,15 +62,19 @@ namespace DuctileContact
   create_two_body_scene(const MeshParameters::TwoBodies &parameters,
                         Triangulation<dim>              &tria)
   {
-    const Point<dim> &L  = parameters.plate_size;
-    const double      a  = parameters.block_edge;
-    const double      z0 = L[2] + parameters.block_gap;
-    const Point<dim>  block_lower(parameters.block_centre[0] - a / 2,
-                                 parameters.block_centre[1] - a / 2,
-                                 z0);
-    const Point<dim>  block_upper(parameters.block_centre[0] + a / 2,
-                                 parameters.block_centre[1] + a / 2,
-                                 z0 + a);
+    // The plate's thickness and the block's height run along the last
+    // coordinate (z; y in 2-D).
+    constexpr unsigned int up = dim - 1;
+    const Point<dim>      &L  = parameters.plate_size;
+    const double           a  = parameters.block_edge;
+    Point<dim>             block_lower, block_upper;
+    for (unsigned int d = 0; d < up; ++d)
+      {
+        block_lower[d] = parameters.block_centre[d] - a / 2;
+        block_upper[d] = parameters.block_centre[d] + a / 2;
+      }
+    block_lower[up] = L[up] + parameters.block_gap;
+    block_upper[up] = block_lower[up] + a;
 
     std::vector<Point<dim>>    vertices;
     std::vector<CellData<dim>> cells;
@@ -95,16 +99,16 @@ namespace DuctileContact
               {
                 if (std::abs(c[0] - L[0]) < tol)
                   face->set_boundary_id(1);
-                else if (std::abs(c[2] - L[2]) < tol)
+                else if (std::abs(c[up] - L[up]) < tol)
                   face->set_boundary_id(3);
                 else
                   face->set_boundary_id(0);
               }
             else
               {
-                if (std::abs(c[2] - block_upper[2]) < tol)
+                if (std::abs(c[up] - block_upper[up]) < tol)
                   face->set_boundary_id(2);
-                else if (std::abs(c[2] - block_lower[2]) < tol)
+                else if (std::abs(c[up] - block_lower[up]) < tol)
                   face->set_boundary_id(4);
                 else
                   face->set_boundary_id(5);
@@ -112,4 +116,3 @@ namespace DuctileContact
           }
   }
 } // namespace DuctileContact
-#endif

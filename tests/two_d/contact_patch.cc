@@ -130,12 +130,10 @@ main(int argc, char **argv)
   for (const auto &[slave, master, entries, name] :
        {std::tuple{4u, 3u, std::string(), "finer (upper) square as slave"},
         std::tuple{3u, 4u, std::string(), "coarser (lower) square as slave"},
-        std::tuple{4u,
-                   3u,
-                   augmented,
-                   "finer square as slave, augmented Lagrangian"}})
+        std::tuple{
+          4u, 3u, augmented, "finer square as slave, augmented Lagrangian"}})
     {
-      const auto s = Testing::run_scene(patch_prm(slave, master, entries),
+      const auto   s     = Testing::run_scene(patch_prm(slave, master, entries),
                                         "patch_" + std::to_string(slave) +
                                           (entries.empty() ? "" : "_al"));
       const double p_max = s.at("contact1_max_pressure").back();
@@ -157,14 +155,13 @@ main(int argc, char **argv)
           << "  top displacement = single block's (1e-8): "
           << Testing::yes_no(std::abs(uy - top_uy) < 1e-8 * std::abs(top_uy))
           << std::endl
-          << "  penetration below 1e-6 h: "
-          << Testing::yes_no(pen < 1e-6 * 0.2) << std::endl
+          << "  penetration below 1e-6 h: " << Testing::yes_no(pen < 1e-6 * 0.2)
+          << std::endl
           << "  active slave nodes: " << s.at("contact1_active_nodes").back()
           << std::endl;
       std::cout << name << ": p " << p_min << " .. " << p_max << " (exact "
                 << p_expected << "), force " << force << ", top u_y " << uy
                 << " (single block " << top_uy << "), penetration " << pen
-                << ", Newton " << s.at("newton_iterations").back()
-                << std::endl;
+                << ", Newton " << s.at("newton_iterations").back() << std::endl;
     }
 }

@@ -85,16 +85,25 @@ namespace DuctileContact
       }
     } box;
 
-    /// Plate + block of the paper's scene (doc/model.md section 7); 3-D
-    /// only.
+    /// Plate + block of the paper's scene (doc/model.md section 7); in
+    /// plane strain a strip [0, Lx] x [0, Ly] and a square block above it.
     struct TwoBodies
     {
+#if DUCTILE_CONTACT_DIM == 3
       dealii::Point<dim>        plate_size{0.3, 0.2, 0.02};
       std::vector<unsigned int> plate_subdivisions{19, 13, 2};
       double                    block_edge = 0.04;
       std::vector<unsigned int> block_subdivisions{5, 5, 5};
       /// In-plane (x, y) position of the block's centre.
       std::vector<double> block_centre{0.035, 0.1};
+#else
+      dealii::Point<dim>        plate_size{0.3, 0.02};
+      std::vector<unsigned int> plate_subdivisions{19, 2};
+      double                    block_edge = 0.04;
+      std::vector<unsigned int> block_subdivisions{5, 5};
+      /// Position x of the block's centre.
+      std::vector<double> block_centre{0.035};
+#endif
       /// Vertical gap between the plate's top and the block's bottom [m].
       double block_gap = 0.;
     } two_bodies;
