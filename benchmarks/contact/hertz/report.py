@@ -18,11 +18,18 @@ E, nu, R = 1e9, 0.3, 1.0
 E_star = E / (2 * (1 - nu ** 2))  # two equal bodies, plane strain
 
 
-def fit(nodes, a_hertz):
+def columns(two_d):
+    """Columns of the contact node table: x (current) and pressure; the
+    slab's has X Y Z x y z pressure ..., the plane's X Y x y pressure ..."""
+    return (2, 4) if two_d else (3, 6)
+
+
+def fit(nodes, a_hertz, two_d):
     """a, p0 from p^2 = p0^2 - (p0/a)^2 x^2 over the active nodes at
     x <= 0.8 a (Hertz): the nodes near the edge carry the discretisation
     of the square-root edge."""
-    x, p = nodes[:, 3], nodes[:, 6]
+    ix, ip = columns(two_d)
+    x, p = nodes[:, ix], nodes[:, ip]
     active = p > 0
     x, p = x[active], p[active]
     sel = x <= 0.8 * a_hertz
@@ -43,12 +50,16 @@ for d in sorted(glob.glob(os.path.join(here, "runs", "h*-*"))):
     last = table[-1]
     step = int(last["step"])
     nodes = np.loadtxt(os.path.join(d, f"contact1_{step:05d}.txt"), skiprows=1)
-    thickness = nodes[:, 2].max()  # the slab is one element thick
+    two_d = m.group(2).endswith("_2d")
+    # The slab is one element thick; the plane gives forces per unit
+    # thickness.
+    thickness = 1.0 if two_d else nodes[:, 2].max()
     P = 2 * abs(last["F2_y"]) / thickness
     a_h = math.sqrt(4 * P * R / (math.pi * E_star))
     p0_h = 2 * P / (math.pi * a_h)
-    a, p0 = fit(nodes, a_h)
-    centre = nodes[(nodes[:, 3] < 1e-12) & (nodes[:, 6] > 0), 6].max()
+    a, p0 = fit(nodes, a_h, two_d)
+    ix, ip = columns(two_d)
+    centre = nodes[(nodes[:, ix] < 1e-12) & (nodes[:, ip] > 0), ip].max()
     screen = open(os.path.join(d, "screen.txt")).read()
     dofs = int(re.search(r"DoFs: (\d+)", screen).group(1))
     newton = int(sum(row["newton_iterations"] for row in table))
@@ -73,7 +84,7 @@ try:
 except ImportError:
     sys.exit(0)
 fig, (l, r) = plt.subplots(1, 2, figsize=(11, 4.3))
-for basis, mk in (("dual", "o"), ("standard", "s")):
+for basis, mk in (("dual", "o"), ("standard", "s"), ("dual_2d", "^"), ("standard_2d", "v")):
     sub = [x for x in rows if x["basis"] == basis]
     if sub:
         l.loglog([x["wall"] for x in sub], [abs(x["a"] / x["a_h"] - 1) for x in sub], mk + "-", label=f"a, {basis}")
@@ -83,13 +94,18 @@ l.set_ylabel("relative error against Hertz")
 l.grid(True, which="both", alpha=0.3)
 l.legend(fontsize=7)
 for x in rows:
-    if x["basis"] == "dual" or x["ratio"] == 8:
+    if x["basis"] == "dual" or (x["basis"] == "standard" and x["ratio"] == 8) or \
+            (x["basis"] == "dual_2d" and x["ratio"] == 16):
+        two_d = x["basis"].endswith("_2d")
         d = os.path.join(here, "runs", f"h{x['ratio']}-{x['basis']}")
         step = int(read_statistics(os.path.join(d, "statistics"))[-1]["step"])
         n = np.loadtxt(os.path.join(d, f"contact1_{step:05d}.txt"), skiprows=1)
-        n = n[(n[:, 2] < 1e-12) & (n[:, 6] > 0)]
-        n = n[np.argsort(n[:, 3])]
-        r.plot(n[:, 3] / x["a_h"], n[:, 6] / x["p0_h"], ".-", label=f"{x['basis']} h = a/{x['ratio']}")
+        ix, ip = columns(two_d)
+        if not two_d:
+            n = n[n[:, 2] < 1e-12]  # one face of the slab
+        n = n[n[:, ip] > 0]
+        n = n[np.argsort(n[:, ix])]
+        r.plot(n[:, ix] / x["a_h"], n[:, ip] / x["p0_h"], ".-", label=f"{x['basis']} h = a/{x['ratio']}")
 xs = np.linspace(0, 1, 200)
 r.plot(xs, np.sqrt(1 - xs ** 2), "k-", lw=2, label="Hertz")
 r.set_xlabel("x / a (Hertz)")
