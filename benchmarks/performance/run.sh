@@ -44,6 +44,7 @@ declare -A variants=(
   [ductile_notch_2d]="default output"
   [sent_pfm_2d]="default output"
   [block_on_strip_2d]="default output"
+  [block_impact_2d]="default output"
   [sent_coarse]="default output relative constant direct monotone linear"
   [bar_impact]="default output"
 )
@@ -60,7 +61,7 @@ declare -A settings=(
 )
 order=(box_compression gmsh_distorted_cube necking_bar two_bodies two_bodies_no_contact
        block_on_plate hertz_sphere ironing ductile_notch ductile_notch_2d sent_pfm_2d
-       block_on_strip_2d
+       block_on_strip_2d block_impact_2d
        sent_coarse
        bar_impact)
 

@@ -12,6 +12,10 @@ import matplotlib.pyplot as plt
 
 here = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).parent)
 speed = sys.argv[2] if len(sys.argv) > 2 else "120"
+# "2d": the plane-strain runs (v<V>_dt<dt>_2d), force along y per unit
+# thickness, results_V_2d.png.
+two_d = len(sys.argv) > 3 and sys.argv[3] == "2d"
+suffix = "_2d" if two_d else ""
 
 
 def table(path):
@@ -20,11 +24,12 @@ def table(path):
 
 
 def dt_of(run):
-    return float(re.match(r"v[0-9.]+_dt([0-9.e-]+)$", run.name).group(1))
+    return float(re.match(r"v[0-9.]+_dt([0-9.e-]+?)(_2d)?$", run.name).group(1))
 
 
 runs = sorted((r for r in (here / "runs").glob(f"v{speed}_dt*")
-               if (r / "statistics").exists()), key=lambda r: -dt_of(r))
+               if (r / "statistics").exists() and r.name.endswith("_2d") == two_d),
+              key=lambda r: -dt_of(r))
 if not runs:
     sys.exit(f"no runs at {speed} m/s")
 data = {r: table(r / "statistics") for r in runs}
@@ -34,15 +39,18 @@ for r in runs:
     s = data[r]
     t = [x * 1e3 for x in s["time"]]
     label = f"dt = {dt_of(r) * 1e6:g} µs"
-    ax[0].plot(t, [-f / 1e3 for f in s["contact1_force_z"]], label=label)
+    force = s["contact1_force_y"] if two_d else s["contact1_force_z"]
+    ax[0].plot(t, [-f / 1e3 for f in force], label=label)
     line, = ax[1].plot(t, s["kinetic_energy"], label=f"K, {label}")
     c = line.get_color()
     ax[1].plot(t, s["plastic_work"], "--", color=c)
     ax[1].plot(t, s["contact1_dissipation"], ":", color=c)
     ax[1].plot(t, s["energy_residual"], "-.", color=c)
-ax[0].set(xlabel="t [ms]", ylabel="contact force on the plate, −F_z [kN]",
-          title=f"block at {speed} m/s")
-ax[1].set(xlabel="t [ms]", ylabel="energy [J]",
+ax[0].set(xlabel="t [ms]",
+          ylabel="contact force on the strip, −F_y [kN/m]" if two_d else
+          "contact force on the plate, −F_z [kN]",
+          title=f"block at {speed} m/s" + (", plane strain" if two_d else ""))
+ax[1].set(xlabel="t [ms]", ylabel="energy [J/m]" if two_d else "energy [J]",
           title="K (solid), W_p (dashed), D_c (dotted), residual (dash-dot)")
 ax[0].legend()
 ax[1].legend(fontsize=8)
@@ -62,5 +70,5 @@ ax[2].set(xlabel=f"|difference to dt = {dt_of(runs[-1]) * 1e6:g} µs| / K₀",
           ylabel="run time on 2 ranks [s]", title="cost against error in dt")
 ax[2].legend()
 fig.tight_layout()
-fig.savefig(here / f"results_{speed}.png", dpi=110)
-print("wrote", here / f"results_{speed}.png")
+fig.savefig(here / f"results_{speed}{suffix}.png", dpi=110)
+print("wrote", here / f"results_{speed}{suffix}.png")

@@ -13,9 +13,9 @@ def table(path):
 
 
 def key(run):
-    """(speed, dt) from runs/v<speed>_dt<dt>."""
-    m = re.match(r"v([0-9.]+)_dt([0-9.e-]+)$", run.name)
-    return float(m.group(1)), float(m.group(2))
+    """(speed, dt, plane strain) from runs/v<speed>_dt<dt>[_2d]."""
+    m = re.match(r"v([0-9.]+)_dt([0-9.e-]+?)(_2d)?$", run.name)
+    return float(m.group(1)), float(m.group(2)), m.group(3) is not None
 
 
 def revision(run):
@@ -43,17 +43,19 @@ def value(s, column):
 
 
 lines = ["# The paper's scene as an impact", "",
-         "From `run.sh` (prm/block_impact.prm); the commit each run ran is in its log.txt. "
+         "From `run.sh` (prm/block_impact.prm; in plane strain prm/block_impact_2d.prm, "
+         "energies per unit thickness [J/m]); the commit each run ran is in its log.txt. "
          "K₀ the block's kinetic energy at launch; the residual is W_ext − (K − K₀) − D_num − "
          "Ψ^e − Ψ^p − D_p − g_c∫γ − D_f − D_c (W_ext = 0: nothing is prescribed but the "
          "clamp), its worst the largest magnitude over the steps. Values at the end (1 ms); the "
          "largest α and s over the run (at the quadrature points).", ""]
 runs = [r for r in (here / "runs").glob("v*_dt*") if finished(r)]
-for speed in sorted({key(r)[0] for r in runs}):
-    group = sorted((r for r in runs if key(r)[0] == speed), key=lambda r: -key(r)[1])
+for speed, two_d in sorted({(key(r)[0], key(r)[2]) for r in runs}):
+    group = sorted((r for r in runs if key(r)[0] == speed and key(r)[2] == two_d),
+                   key=lambda r: -key(r)[1])
     data = {r: table(r / "statistics") for r in group}
     finest = data[group[-1]]
-    lines += [f"## {speed:g} m/s", "",
+    lines += [f"## {speed:g} m/s" + (", plane strain" if two_d else ""), "",
               "| dt [µs] | commit | end time [ms] | K₀ [J] | residual / K₀ | worst / K₀ | "
               + " | ".join(q[1] for q in QOIS)
               + " | min D_p,loc | Newton iterations | cut-backs | wall [s] |",

@@ -8,18 +8,24 @@
 # s, Newton iterations, run time; the differences to the finest run);
 # plot.py: force and energies over time, and run time against the
 # difference in dt (results_V.png).
-# Usage: benchmarks/dynamics/block_impact/run.sh [V [DTS]] (default 120 m/s
-# and "2e-5 1e-5 5e-6"; 2 ranks, about 50 minutes). Finished runs are
-# skipped.
+# With the third argument 2d: prm/block_impact_2d.prm, the same in plane
+# strain (runs v<V>_dt<dt>_2d).
+# Usage: benchmarks/dynamics/block_impact/run.sh [V [DTS [2d]]] (default
+# 120 m/s and "2e-5 1e-5 5e-6"; 2 ranks, about 50 minutes in 3-D).
+# Finished runs are skipped.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 speed=${1:-120}
 steps=${2:-2e-5 1e-5 5e-6}
+scene=block_impact suffix="" velocity="0; 0; -$speed"
+if [[ ${3:-} == 2d ]]; then
+  scene=block_impact_2d suffix=_2d velocity="0; -$speed"
+fi
 require_build
 
 for dt in $steps; do
-  dir="$here/runs/v${speed}_dt$dt"
+  dir="$here/runs/v${speed}_dt$dt$suffix"
   if run_finished "$dir"; then
     echo "== $speed m/s, dt = $dt (done)"
     continue
@@ -29,11 +35,11 @@ for dt in $steps; do
   [[ $dt == 1e-5 ]] && interval=5
   echo "== $speed m/s, dt = $dt"
   /usr/bin/time -f "%e s %M KB" -o "$dir/time.txt" \
-    mpirun -np 2 "$exe" "$project_root/prm/block_impact.prm" \
-    --set "Body 1/Initial velocity = 0; 0; -$speed" \
+    mpirun -np 2 "$exe" "$project_root/prm/$scene.prm" \
+    --set "Body 1/Initial velocity = $velocity" \
     --set "Load stepping/Time step = $dt" \
     --set "Output/Directory = $dir" --set "Output/Interval = $interval" \
     > "$dir/screen.txt" 2>&1 || echo "   stopped early, see $dir/screen.txt"
 done
 /usr/bin/python3 "$here/report.py" "$here"
-/usr/bin/python3 "$here/plot.py" "$here" "$speed"
+/usr/bin/python3 "$here/plot.py" "$here" "$speed" ${3:-}
