@@ -99,6 +99,10 @@ for job in "${jobs[@]}"; do
   (cd "$project_root" && /usr/bin/time -f "peak memory %M KB per rank" \
      mpirun -np 2 "$exe" "$out/scene.prm") >> "$out/screen.txt" 2>&1 ||
     echo "   stopped early, see $out/screen.txt"
+  # The field output was written for its cost; the run keeps its text files.
+  find "$out" -maxdepth 1 -type f ! -name statistics ! -name '*.prm' \
+    ! -name log.txt ! -name screen.txt -delete
+  rm -rf "$out/checkpoints"
 done
 /usr/bin/env python3 "$here/report.py"
 /usr/bin/env python3 "$here/run_times.py"
