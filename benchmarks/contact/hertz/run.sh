@@ -16,40 +16,31 @@ source "$here/../../../scripts/env.sh"
 np=${1:-2}
 require_build
 mkdir -p "$here/runs/meshes"
+# run_case RATIO BASIS SUFFIX: the run h<RATIO>-<BASIS><SUFFIX> (SUFFIX _2d:
+# plane strain, its own mesh and scene_2d.prm.in).
+run_case() {
+  local ratio=$1 basis=$2 suffix=$3
+  local mesh="$here/runs/meshes/hertz_h$ratio$suffix.msh"
+  [[ -f "$mesh" ]] || /usr/bin/python3 "$here/../../../prm/meshes/make_hertz.py" \
+    1 0.01 "$ratio" 0.3 "$mesh" ${suffix:+2d} > /dev/null
+  local dir="$here/runs/h$ratio-$basis$suffix"
+  if [[ -f "$dir/statistics" ]]; then echo "== h = a/$ratio, $basis$suffix (done)"; return; fi
+  mkdir -p "$dir"
+  # The semi-smooth Newton method condenses with the dual basis's
+  # diagonal D; the standard basis runs with the augmented Lagrangian.
+  local enforcement="semi-smooth Newton"
+  [[ $basis == standard ]] && enforcement="augmented Lagrangian"
+  sed -e "s|@MESH@|$mesh|" -e "s|@DIR@|$dir|" -e "s|@BASIS@|$basis|" \
+    -e "s|@ENFORCEMENT@|$enforcement|" \
+    "$here/scene${suffix}.prm.in" > "$dir/scene.prm"
+  echo "== h = a/$ratio, $basis$suffix"
+  run_scene "$np" "$dir"
+  rm -f "$dir"/*.vtu "$dir"/*.pvtu
+}
 for ratio in 2 4 8; do
-  mesh="$here/runs/meshes/hertz_h$ratio.msh"
-  [[ -f "$mesh" ]] || /usr/bin/python3 "$here/../../../prm/meshes/make_hertz.py" 1 0.01 "$ratio" 0.3 "$mesh" > /dev/null
-  for basis in dual standard; do
-    dir="$here/runs/h$ratio-$basis"
-    if [[ -f "$dir/statistics" ]]; then echo "== h = a/$ratio, $basis (done)"; continue; fi
-    mkdir -p "$dir"
-    # The semi-smooth Newton method condenses with the dual basis's
-    # diagonal D; the standard basis runs with the augmented Lagrangian.
-    enforcement="semi-smooth Newton"
-    [[ $basis == standard ]] && enforcement="augmented Lagrangian"
-    sed -e "s|@MESH@|$mesh|" -e "s|@DIR@|$dir|" -e "s|@BASIS@|$basis|" \
-      -e "s|@ENFORCEMENT@|$enforcement|" \
-      "$here/scene.prm.in" > "$dir/scene.prm"
-    echo "== h = a/$ratio, $basis"
-    run_scene "$np" "$dir"
-    rm -f "$dir"/*.vtu "$dir"/*.pvtu
-  done
+  for basis in dual standard; do run_case $ratio $basis ""; done
 done
 for ratio in 2 4 8 16; do
-  mesh="$here/runs/meshes/hertz_h${ratio}_2d.msh"
-  [[ -f "$mesh" ]] || /usr/bin/python3 "$here/../../../prm/meshes/make_hertz.py" 1 0.01 "$ratio" 0.3 "$mesh" 2d > /dev/null
-  for basis in dual standard; do
-    dir="$here/runs/h$ratio-${basis}_2d"
-    if [[ -f "$dir/statistics" ]]; then echo "== h = a/$ratio, $basis, 2-D (done)"; continue; fi
-    mkdir -p "$dir"
-    enforcement="semi-smooth Newton"
-    [[ $basis == standard ]] && enforcement="augmented Lagrangian"
-    sed -e "s|@MESH@|$mesh|" -e "s|@DIR@|$dir|" -e "s|@BASIS@|$basis|" \
-      -e "s|@ENFORCEMENT@|$enforcement|" \
-      "$here/scene_2d.prm.in" > "$dir/scene.prm"
-    echo "== h = a/$ratio, $basis, 2-D"
-    run_scene "$np" "$dir"
-    rm -f "$dir"/*.vtu "$dir"/*.pvtu
-  done
+  for basis in dual standard; do run_case $ratio $basis _2d; done
 done
 /usr/bin/python3 "$here/report.py" "$here"
