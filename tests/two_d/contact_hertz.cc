@@ -28,32 +28,14 @@ namespace
   std::string
   hertz_2d_prm(const std::string &enforcement)
   {
-    const std::string material = R"(
-  set Shear modulus = 3.846153846153846e8
-  set Bulk modulus  = 8.333333333333334e8
-end
-)";
-    return R"(
-set Dimension = 2
-subsection Mesh
-  set Scene = gmsh
-  subsection Gmsh
-    set File name = )" SOURCE_DIR R"(/meshes/hertz_h4_2d.msh
-  end
-end
-subsection Bodies
-  set Material ids = 1, 2
-end
-subsection Body 1)" +
-           material + "subsection Body 2" + material + R"(
-subsection Contact
-  set Pairs = 1
-end
-subsection Contact pair 1
-  set Slave boundary id  = 4
-  set Master boundary id = 3
-)" + enforcement +
-           R"(end
+    return "set Dimension = 2\n" +
+           Testing::two_body_contact_prm("hertz_h4_2d.msh",
+                                         "3.846153846153846e8",
+                                         "8.333333333333334e8",
+                                         4,
+                                         3,
+                                         enforcement) +
+           R"(
 subsection Boundary conditions
   set Boundary ids = 1, 2, 5
 end

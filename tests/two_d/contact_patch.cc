@@ -65,27 +65,14 @@ end
             const unsigned int master,
             const std::string &pair_entries)
   {
-    return R"(
-set Dimension = 2
-subsection Mesh
-  set Scene = gmsh
-  subsection Gmsh
-    set File name = )" SOURCE_DIR R"(/meshes/contact_patch_2d.msh
-  end
-end
-subsection Bodies
-  set Material ids = 1, 2
-end
-subsection Body 1)" +
-           material + "subsection Body 2" + material + R"(
-subsection Contact
-  set Pairs = 1
-end
-subsection Contact pair 1
-  set Slave boundary id  = )" +
-           std::to_string(slave) +
-           "\n  set Master boundary id = " + std::to_string(master) + "\n" +
-           pair_entries + R"(end
+    return "set Dimension = 2\n" +
+           Testing::two_body_contact_prm("contact_patch_2d.msh",
+                                         "1e9",
+                                         "2e9",
+                                         slave,
+                                         master,
+                                         pair_entries) +
+           R"(
 subsection Boundary conditions
   set Boundary ids = 1, 2, 5, 8
 end
