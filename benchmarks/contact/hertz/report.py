@@ -15,7 +15,13 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from runs_io import read_statistics, wall_time  # noqa: E402
 
 E, nu, R = 1e9, 0.3, 1.0
-E_star = E / (2 * (1 - nu ** 2))  # two equal bodies, plane strain
+
+
+def e_star(stiff):
+    """Plane-strain contact modulus: 1/E* = (1 - nu^2) (1/E_1 + 1/E_2); the
+    indenter E_2 = E, or 3 E in the runs *_stiff."""
+    E2 = 3 * E if stiff else E
+    return 1 / ((1 - nu ** 2) * (1 / E + 1 / E2))
 
 
 def columns(two_d):
@@ -50,7 +56,8 @@ for d in sorted(glob.glob(os.path.join(here, "runs", "h*-*"))):
     last = table[-1]
     step = int(last["step"])
     nodes = np.loadtxt(os.path.join(d, f"contact1_{step:05d}.txt"), skiprows=1)
-    two_d = m.group(2).endswith("_2d")
+    two_d = "_2d" in m.group(2)
+    E_star = e_star(m.group(2).endswith("_stiff"))
     # The slab is one element thick; the plane gives forces per unit
     # thickness.
     thickness = 1.0 if two_d else nodes[:, 2].max()

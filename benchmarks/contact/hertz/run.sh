@@ -17,10 +17,15 @@ np=${1:-2}
 require_build
 mkdir -p "$here/runs/meshes"
 # run_case RATIO BASIS SUFFIX: the run h<RATIO>-<BASIS><SUFFIX> (SUFFIX _2d:
-# plane strain, its own mesh and scene_2d.prm.in).
+# plane strain, its own mesh and scene_2d.prm.in; _2d_stiff: the same with an
+# indenter three times stiffer, E = 3 GPa).
 run_case() {
   local ratio=$1 basis=$2 suffix=$3
+  local g2=3.846153846153846e8 k2=8.333333333333334e8
+  [[ $suffix == *_stiff ]] && g2=1.153846153846154e9 k2=2.5e9
+  local template=scene${suffix%_stiff}.prm.in
   local mesh="$here/runs/meshes/hertz_h$ratio$suffix.msh"
+  mesh=${mesh/_stiff/}
   [[ -f "$mesh" ]] || /usr/bin/python3 "$here/../../../prm/meshes/make_hertz.py" \
     1 0.01 "$ratio" 0.3 "$mesh" ${suffix:+2d} > /dev/null
   local dir="$here/runs/h$ratio-$basis$suffix"
@@ -31,8 +36,8 @@ run_case() {
   local enforcement="semi-smooth Newton"
   [[ $basis == standard ]] && enforcement="augmented Lagrangian"
   sed -e "s|@MESH@|$mesh|" -e "s|@DIR@|$dir|" -e "s|@BASIS@|$basis|" \
-    -e "s|@ENFORCEMENT@|$enforcement|" \
-    "$here/scene${suffix}.prm.in" > "$dir/scene.prm"
+    -e "s|@ENFORCEMENT@|$enforcement|" -e "s|@G2@|$g2|" -e "s|@K2@|$k2|" \
+    "$here/$template" > "$dir/scene.prm"
   echo "== h = a/$ratio, $basis$suffix"
   run_scene "$np" "$dir"
   rm -f "$dir"/*.vtu "$dir"/*.pvtu
@@ -43,4 +48,6 @@ done
 for ratio in 2 4 8 16; do
   for basis in dual standard; do run_case $ratio $basis _2d; done
 done
+# Dissimilar materials (1/E* = (1 - nu^2) (1/E_1 + 1/E_2)), dual basis.
+for ratio in 4 8 16; do run_case $ratio dual _2d_stiff; done
 /usr/bin/python3 "$here/report.py" "$here"
