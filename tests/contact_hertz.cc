@@ -50,35 +50,24 @@ end
     const auto        stats = Testing::run_scene(hertz_prm(ratio), dir);
     const auto nodes = Testing::read_statistics(dir + "/contact1_00001.txt");
 
-    const auto &x = nodes.at("x"), &p = nodes.at("pressure");
-    double      thickness = 0;
+    double thickness = 0;
     for (const double z : nodes.at("Z"))
       thickness = std::max(thickness, z);
-    const double E = 1e9, nu = 0.3, R = 1.;
-    const double E_star = E / (2. * (1. - nu * nu));
-    const double F      = stats.at("F2_y").back();
-    const double P      = 2. * std::abs(F) / thickness;
-    const double a_h    = std::sqrt(4. * P * R / (M_PI * E_star));
-    const double p0_h   = 2. * P / (M_PI * a_h);
-
-    std::vector<double> x2(x.size());
-    for (unsigned int i = 0; i < x.size(); ++i)
-      x2[i] = x[i] * x[i];
-    const auto [a, p0] =
-      Testing::fit_hertz_pressure(x2, p, std::pow(0.8 * a_h, 2));
-    std::cout << "h = a/" << ratio << ": P " << P << ", a " << a << " (Hertz "
-              << a_h << "), p0 " << p0 << " (Hertz " << p0_h << ")"
-              << std::endl;
-    return {std::abs(a / a_h - 1.),
-            std::abs(p0 / p0_h - 1.),
+    const Testing::HertzLine h = Testing::hertz_line(stats, nodes, thickness);
+    const double             F = stats.at("F2_y").back();
+    std::cout << "h = a/" << ratio << ": P " << h.P << ", a " << h.a
+              << " (Hertz " << h.a_hertz << "), p0 " << h.p0 << " (Hertz "
+              << h.p0_hertz << ")" << std::endl;
+    return {std::abs(h.a / h.a_hertz - 1.),
+            std::abs(h.p0 / h.p0_hertz - 1.),
             // contact1_force: what the slave (indenter) exerts on the
             // master; the top face's reaction F balances its opposite.
             std::abs(F - stats.at("contact1_force_y").back()) / std::abs(F),
             stats.at("contact1_max_penetration").back(),
             stats.at("tangent_error").back(),
-            P,
-            a,
-            p0};
+            h.P,
+            h.a,
+            h.p0};
   }
 } // namespace
 

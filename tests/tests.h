@@ -24,6 +24,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace Testing
@@ -398,6 +399,36 @@ end
     const double c0  = (s2 * t0 - s1 * t1) / det;
     const double c1  = (s0 * t1 - s1 * t0) / det;
     return {std::sqrt(-c0 / c1), std::sqrt(c0)};
+  }
+
+  /// Hertz line contact of the meshes of prm/meshes/make_hertz.py (a
+  /// cylinder R = 1 m on a flat foundation, E = 1 GPa and nu = 0.3 both, half
+  /// model) from a run: the load per unit length P (twice the half model's
+  /// reaction F2_y of @p stats, divided by @p thickness), Hertz's half-width
+  /// a = sqrt(4 P R / (pi E*)) and peak pressure p0 = 2 P / (pi a) for it, and
+  /// the a and p0 of fit_hertz_pressure() over the contact nodes @p nodes
+  /// at x <= 0.8 a (Hertz).
+  struct HertzLine
+  {
+    double P, a_hertz, p0_hertz, a, p0;
+  };
+  inline HertzLine
+  hertz_line(const Table &stats, const Table &nodes, const double thickness)
+  {
+    const double E = 1e9, nu = 0.3, R = 1.;
+    const double E_star = E / (2. * (1. - nu * nu));
+    HertzLine    h;
+    h.P        = 2. * std::abs(stats.at("F2_y").back()) / thickness;
+    h.a_hertz  = std::sqrt(4. * h.P * R / (M_PI * E_star));
+    h.p0_hertz = 2. * h.P / (M_PI * h.a_hertz);
+    const std::vector<double> &x = nodes.at("x");
+    std::vector<double>        x2(x.size());
+    for (unsigned int i = 0; i < x.size(); ++i)
+      x2[i] = x[i] * x[i];
+    std::tie(h.a, h.p0) = fit_hertz_pressure(x2,
+                                             nodes.at("pressure"),
+                                             std::pow(0.8 * h.a_hertz, 2));
+    return h;
   }
 
   /// Length of the vector statistics columns contact1_<what>_x/y/z in row

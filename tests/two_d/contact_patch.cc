@@ -16,6 +16,16 @@ using namespace dealii;
 
 namespace
 {
+  /// Two load steps to 1 MPa, Newton to 1e-11 (both runs).
+  const std::string steps = R"(subsection Load stepping
+  set End time  = 1
+  set Time step = 0.5
+end
+subsection Newton
+  set Relative tolerance = 1e-11
+end
+)";
+
   const std::string material = R"(
   set Shear modulus = 1e9
   set Bulk modulus  = 2e9
@@ -50,14 +60,7 @@ end
 subsection Boundary 3
   set Traction = 0; -1e6*t
 end
-subsection Load stepping
-  set End time  = 1
-  set Time step = 0.5
-end
-subsection Newton
-  set Relative tolerance = 1e-11
-end
-)";
+)" + steps;
   }
 
   std::string
@@ -88,14 +91,7 @@ end
 subsection Boundary 8
   set Constrained components = x
 end
-subsection Load stepping
-  set End time  = 1
-  set Time step = 0.5
-end
-subsection Newton
-  set Relative tolerance = 1e-11
-end
-)";
+)" + steps;
   }
 } // namespace
 
