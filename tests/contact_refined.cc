@@ -29,7 +29,7 @@
 //    refined run may take 1.5 times as many: a check against divergence
 //    and cutbacks, not of the linearisation.
 //  - Adaptive refinement with contact: the patch with a plastic lower cube
-//    (yield at 0.85 MPa, 1.25 MPa at the end) and Coulomb friction mu_c =
+//    (yield at 0.85 MPa, 1.125 MPa at the end) and Coulomb friction mu_c =
 //    0.05,
 //    refined where alpha > 1e-8, so the lower cube is refined once in the
 //    step where it starts to yield and the step is solved again on the new
@@ -164,7 +164,7 @@ subsection Newton
   set Relative tolerance = 1e-10
 end
 subsection Load stepping
-  set End time  = 1.25
+  set End time  = 1.125
   set Time step = 0.25
 end
 subsection Output
