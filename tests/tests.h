@@ -411,6 +411,9 @@ end
   struct HertzLine
   {
     double P, a_hertz, p0_hertz, a, p0;
+    /// The largest |p / p_Hertz(x) - 1| over the nodes in contact at
+    /// x <= a_hertz / 2: the amplitude of the vertex/mid-side alternation.
+    double alternation;
   };
   inline HertzLine
   hertz_line(const Table &stats, const Table &nodes, const double thickness)
@@ -428,6 +431,14 @@ end
     std::tie(h.a, h.p0) = fit_hertz_pressure(x2,
                                              nodes.at("pressure"),
                                              std::pow(0.8 * h.a_hertz, 2));
+    h.alternation = 0.;
+    for (unsigned int i = 0; i < x.size(); ++i)
+      if (nodes.at("pressure")[i] > 0. && x[i] <= 0.5 * h.a_hertz)
+        h.alternation = std::max(
+          h.alternation,
+          std::abs(nodes.at("pressure")[i] /
+                     (h.p0_hertz * std::sqrt(1. - x2[i] / (h.a_hertz * h.a_hertz))) -
+                   1.));
     return h;
   }
 

@@ -209,6 +209,23 @@ namespace DuctileContact
       "file, wherever the program is started (parameters.prm "
       "in the results records it as an absolute path).",
       Patterns::Anything());
+    prm.add_parameter(
+      "Curved boundaries",
+      gmsh.curved_boundaries_text,
+      "Boundaries of the mesh that are curved, separated by ';': "
+      "'id : centre' for a circle (2-D) or a sphere (3-D) around the "
+      "point centre, or 'id : point : direction' for a cylinder (3-D) "
+      "whose axis runs through the point along the direction, e.g. "
+      "'4 : 0, 1' (2-D) or '4 : 0, 1, 0 : 0, 0, 1' (3-D). Every vertex of "
+      "the boundary must lie on the surface. Its faces then follow the "
+      "surface under refinement, and the mapping (MappingQ of the "
+      "elements' degree) places the mid-side nodes on it. Without this "
+      "entry a curved boundary is the polygon of its vertices with its "
+      "mid-side nodes on the chords, h^2/(8R) inside a circle of radius "
+      "R, which contact feels as a pressure that alternates between "
+      "vertex and mid-side nodes (doc/contact.md, section 12). Empty: "
+      "none.",
+      Patterns::Anything());
     prm.leave_subsection();
   }
 
@@ -237,6 +254,58 @@ namespace DuctileContact
             throw InputError(entry, text, "coordinates must be numbers");
           }
       return p;
+    }
+  } // namespace
+
+
+
+  namespace
+  {
+    /// One entry 'id : centre' or 'id : point : direction' of
+    /// Mesh/Gmsh/Curved boundaries.
+    MeshParameters::CurvedBoundary
+    parse_curved_boundary(const std::string &text)
+    {
+      const std::string entry = "Mesh/Gmsh/Curved boundaries";
+      const auto        parts = Utilities::split_string_list(text, ':');
+      check_input(parts.size() == 2 || (dim == 3 && parts.size() == 3),
+                  entry,
+                  text,
+                  dim == 2 ? "each curved boundary must read 'id : x, y' (a "
+                             "circle around the point)"
+                           : "each curved boundary must read 'id : x, y, z' "
+                             "(a sphere) or 'id : x, y, z : dx, dy, dz' (a "
+                             "cylinder around the axis through the point)");
+      for (unsigned int k = 1; k < parts.size(); ++k)
+        check_input(Utilities::split_string_list(parts[k], ',').size() == dim,
+                    entry,
+                    text,
+                    "a point or a direction needs " + vector_size_word() +
+                      " comma-separated coordinates");
+      MeshParameters::CurvedBoundary b;
+      int                            id = -1;
+      try
+        {
+          id = Utilities::string_to_int(parts[0]);
+        }
+      catch (...)
+        {
+        }
+      check_input(id >= 0,
+                  entry,
+                  text,
+                  "the boundary id must be a non-negative integer");
+      b.boundary_id = static_cast<unsigned int>(id);
+      b.centre      = parse_point(parts[1], entry);
+      if (parts.size() == 3)
+        {
+          b.axis = parse_point(parts[2], entry);
+          check_input(b.axis.norm() > 0.,
+                      entry,
+                      text,
+                      "the cylinder's axis direction must not be zero");
+        }
+      return b;
     }
   } // namespace
 
@@ -349,5 +418,14 @@ namespace DuctileContact
                     "readable; a relative name is read from the folder of "
                     "the input file)");
       }
+    gmsh.curved_boundaries.clear();
+    for (const std::string &text :
+         Utilities::split_string_list(gmsh.curved_boundaries_text, ';'))
+      if (!Utilities::trim(text).empty())
+        gmsh.curved_boundaries.push_back(parse_curved_boundary(text));
+    check_input(gmsh.curved_boundaries.empty() || scene == SceneType::gmsh,
+                "Mesh/Gmsh/Curved boundaries",
+                gmsh.curved_boundaries_text,
+                "curved boundaries are read for Scene = gmsh only");
   }
 } // namespace DuctileContact

@@ -119,9 +119,24 @@ namespace DuctileContact
       RoundBarModel model              = RoundBarModel::full;
     } round_bar;
 
+    /// A boundary of a Gmsh mesh that is a circle (2-D) or a sphere (3-D)
+    /// around @p centre, or (3-D) a cylinder whose axis runs through
+    /// @p centre along @p axis: its faces get that manifold, so that the
+    /// mapping and the refinement follow the curve to the order of the
+    /// elements instead of its chords.
+    struct CurvedBoundary
+    {
+      unsigned int         boundary_id = 0;
+      dealii::Point<dim>   centre;
+      dealii::Tensor<1, dim> axis; ///< zero: a circle or a sphere
+    };
+
     struct Gmsh
     {
       std::string file_name;
+      /// `Curved boundaries` as given; parsed by check().
+      std::string                 curved_boundaries_text;
+      std::vector<CurvedBoundary> curved_boundaries;
     } gmsh;
 
     /// Subsection `Adaptive refinement`: cells refined during the run
