@@ -72,10 +72,12 @@ namespace DuctileContact
       multiplier_basis,
       multiplier_basis_names(),
       "Basis Phi_j of the contact pressure on the slave faces: dual "
-      "(biorthogonal to the face shape functions, Wohlmuth; the nodal "
-      "pressures are point values of the pressure field) or standard "
-      "(Phi_j = N_j; the nodal coefficients of quadratic faces oscillate "
-      "between vertex and mid-side nodes where the pressure varies).");
+      "(biorthogonal to the face shape functions, Wohlmuth: the nodal "
+      "pressures are the N_j-weighted averages of the pressure field and "
+      "condense node by node) or standard (Phi_j = N_j, needs the augmented "
+      "Lagrangian). On a curved surface give the curve "
+      "(Mesh/Gmsh/Curved boundaries): a polygon's nodal pressures "
+      "alternate between vertex and mid-side nodes with either basis.");
     add_option(
       prm,
       "Enforcement",

@@ -18,10 +18,13 @@ source "$here/../../../scripts/env.sh"
 np=${1:-2}
 require_build
 mkdir -p "$here/runs/meshes"
-for case in 2:0.2 3:0.2 3:0.4 4:0.2; do
-  ratio=${case%%:*} width=${case##*:}
-  name="h$ratio-w$width"
-  mesh="$here/runs/meshes/$name.msh"
+# Cases RATIO:WIDTH[:curved]; curved: the sphere's surface given as the
+# sphere (Mesh/Gmsh/Curved boundaries = 4 : 0, 0, 1), so that the mid-side
+# nodes of its faces lie on it rather than on the chords (the same meshes).
+for case in 2:0.2 3:0.2 3:0.4 4:0.2 2:0.2:curved 3:0.2:curved 4:0.2:curved; do
+  IFS=: read -r ratio width curved <<< "$case"
+  name="h$ratio-w$width${curved:+-curved}"
+  mesh="$here/runs/meshes/h$ratio-w$width.msh"
   [[ -f "$mesh" ]] || /usr/bin/python3 "$project_root/prm/meshes/make_hertz_sphere.py" \
     1 0.01 "$ratio" "$width" 1.5 "$mesh" > /dev/null
   dir="$here/runs/$name"
@@ -32,6 +35,10 @@ for case in 2:0.2 3:0.2 3:0.4 4:0.2; do
   mkdir -p "$dir"
   sed -e "s|= meshes/hertz_sphere.msh|= $mesh|" -e "s|results/hertz_sphere|$dir|" \
     "$project_root/prm/hertz_sphere.prm" > "$dir/scene.prm"
+  if [[ -n $curved ]]; then
+    printf 'subsection Mesh\n  subsection Gmsh\n    set Curved boundaries = 4 : 0, 0, 1\n  end\nend\n' \
+      >> "$dir/scene.prm"
+  fi
   echo "== $name"
   run_scene "$np" "$dir"
   rm -f "$dir"/*.vtu "$dir"/*.pvtu
