@@ -46,6 +46,11 @@ quantities = {
                      "benchmarks/contact/hertz_sphere/results.md, sphere, "
                      "h = a/4, P = 756.42 N (approach within 0.011 % and "
                      "p0 within 0.055 % of Hertz)"),
+    "hertz_cylinder_2d": ("F2_y at 0.2 mm [N/m] (half model: P / 2)", last("F2_y"),
+                          -29968.49, 1e-3,
+                          "benchmarks/contact/hertz/results.md, run "
+                          "h8-dual_2d_stiff_curved: a and p0 within 0.07 % "
+                          "of Hertz"),
     "ironing": ("F2_x / F2_y at the end", ratio, 0.30175, 1e-3,
                 "benchmarks/contact/ironing/results.md (0.3017 .. 0.3018 "
                 "while sliding)"),

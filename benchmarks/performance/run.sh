@@ -39,6 +39,7 @@ declare -A variants=(
   [two_bodies_no_contact]="default output"
   [block_on_plate]="default output relative newton direct constant"
   [hertz_sphere]="default output direct amg"
+  [hertz_cylinder_2d]="default output"
   [ironing]="default output relative direct"
   [ductile_notch]="default output relative direct best"
   [ductile_notch_2d]="default output"
@@ -60,7 +61,7 @@ declare -A settings=(
   [best]="subsection Load stepping;  set Predictor = best linear;end"
 )
 order=(box_compression gmsh_distorted_cube necking_bar two_bodies two_bodies_no_contact
-       block_on_plate hertz_sphere ironing ductile_notch ductile_notch_2d sent_pfm_2d
+       block_on_plate hertz_sphere hertz_cylinder_2d ironing ductile_notch ductile_notch_2d sent_pfm_2d
        block_on_strip_2d block_impact_2d
        sent_coarse
        bar_impact)
