@@ -411,8 +411,9 @@ end
   struct HertzLine
   {
     double P, a_hertz, p0_hertz, a, p0;
-    /// The largest |p / p_Hertz(x) - 1| over the nodes in contact at
-    /// x <= a_hertz / 2: the amplitude of the vertex/mid-side alternation.
+    /// The largest |p / p_Hertz(x) - 1| over the nodes at x <= a_hertz / 2
+    /// (1 for a node out of contact there; NaN when there is none): the
+    /// largest deviation of a nodal pressure from Hertz's.
     double alternation;
   };
   inline HertzLine
@@ -431,14 +432,18 @@ end
     std::tie(h.a, h.p0) = fit_hertz_pressure(x2,
                                              nodes.at("pressure"),
                                              std::pow(0.8 * h.a_hertz, 2));
-    h.alternation = 0.;
+    h.alternation       = std::numeric_limits<double>::quiet_NaN();
+    unsigned int n      = 0;
     for (unsigned int i = 0; i < x.size(); ++i)
-      if (nodes.at("pressure")[i] > 0. && x[i] <= 0.5 * h.a_hertz)
-        h.alternation = std::max(
-          h.alternation,
-          std::abs(nodes.at("pressure")[i] /
-                     (h.p0_hertz * std::sqrt(1. - x2[i] / (h.a_hertz * h.a_hertz))) -
-                   1.));
+      if (x[i] <= 0.5 * h.a_hertz)
+        {
+          const double p = nodes.at("pressure")[i];
+          const double hertz =
+            h.p0_hertz * std::sqrt(1. - x2[i] / (h.a_hertz * h.a_hertz));
+          const double deviation = p > 0. ? std::abs(p / hertz - 1.) : 1.;
+          h.alternation =
+            n++ == 0 ? deviation : std::max(h.alternation, deviation);
+        }
     return h;
   }
 

@@ -1,7 +1,4 @@
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
-#include <deal.II/lac/vector.h>
 
 #include <ductile_contact/assembly/scatter.h>
 #include <ductile_contact/contact/contact_problem.h>
@@ -10,10 +7,7 @@
 #include <ductile_contact/core/input_error.h>
 
 #include <algorithm>
-#include <cmath>
-#include <memory>
 #include <set>
-#include <sstream>
 #include <unordered_set>
 
 namespace DuctileContact

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
 
 namespace DuctileContact
@@ -36,11 +37,18 @@ namespace DuctileContact
     void
     attach_curved_boundary(const MeshParameters::CurvedBoundary &b,
                            const types::manifold_id              id,
-                           const std::string                    &text,
                            Triangulation<dim>                   &tria)
     {
       const std::string entry = "Mesh/Gmsh/Curved boundaries";
-      double r_min = std::numeric_limits<double>::max(), r_max = 0.;
+      double            r_min = std::numeric_limits<double>::max(), r_max = 0.;
+      std::set<types::boundary_id> ids;
+      for (const auto &cell : tria.cell_iterators_on_level(0))
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            ids.insert(face->boundary_id());
+      std::string ids_text;
+      for (const types::boundary_id i : ids)
+        ids_text += (ids_text.empty() ? "" : ", ") + std::to_string(i);
       for (const auto &cell : tria.cell_iterators_on_level(0))
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary() && face->boundary_id() == b.boundary_id)
@@ -55,17 +63,19 @@ namespace DuctileContact
             }
       check_input(r_max > 0.,
                   entry,
-                  text,
+                  b.text,
                   "no face of the mesh has boundary id " +
-                    std::to_string(b.boundary_id));
+                    std::to_string(b.boundary_id) + " (it has " + ids_text +
+                    ")");
       check_input(r_max - r_min <= 1e-6 * r_max,
                   entry,
-                  text,
+                  b.text,
                   "the vertices of boundary " + std::to_string(b.boundary_id) +
                     " are not on one surface: their distances from the " +
                     (b.axis.norm() > 0. ? "axis" : "centre") + " range from " +
                     Utilities::to_string(r_min) + " to " +
-                    Utilities::to_string(r_max));
+                    Utilities::to_string(r_max) +
+                    ", and must agree to 1e-6 of the radius");
       if (b.axis.norm() > 0.)
         {
 #if DUCTILE_CONTACT_DIM == 3
@@ -103,20 +113,11 @@ namespace DuctileContact
         throw InputError("Mesh/Gmsh/File name",
                          parameters.file_name,
                          std::string("it is not a readable ") +
-                           (dim == 2 ? "plane quadrilateral" :
-                                       "3-D hexahedral") +
-                           " Gmsh mesh (" +
-                           one_line(info.str()) + ")");
+                           (dim == 2 ? "plane quadrilateral"
+                                     : "3-D hexahedral") +
+                           " Gmsh mesh (" + one_line(info.str()) + ")");
       }
-    std::vector<std::string> texts;
-    for (const std::string &t :
-         Utilities::split_string_list(parameters.curved_boundaries_text, ';'))
-      if (!Utilities::trim(t).empty())
-        texts.push_back(t);
     for (unsigned int k = 0; k < parameters.curved_boundaries.size(); ++k)
-      attach_curved_boundary(parameters.curved_boundaries[k],
-                             k,
-                             k < texts.size() ? texts[k] : "",
-                             tria);
+      attach_curved_boundary(parameters.curved_boundaries[k], k, tria);
   }
 } // namespace DuctileContact

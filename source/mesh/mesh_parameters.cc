@@ -283,7 +283,8 @@ namespace DuctileContact
                     "a point or a direction needs " + vector_size_word() +
                       " comma-separated coordinates");
       MeshParameters::CurvedBoundary b;
-      int                            id = -1;
+      b.text = text;
+      int id = -1;
       try
         {
           id = Utilities::string_to_int(parts[0]);
@@ -422,7 +423,18 @@ namespace DuctileContact
     for (const std::string &text :
          Utilities::split_string_list(gmsh.curved_boundaries_text, ';'))
       if (!Utilities::trim(text).empty())
-        gmsh.curved_boundaries.push_back(parse_curved_boundary(text));
+        {
+          gmsh.curved_boundaries.push_back(parse_curved_boundary(text));
+          for (unsigned int k = 0; k + 1 < gmsh.curved_boundaries.size(); ++k)
+            check_input(gmsh.curved_boundaries[k].boundary_id !=
+                          gmsh.curved_boundaries.back().boundary_id,
+                        "Mesh/Gmsh/Curved boundaries",
+                        gmsh.curved_boundaries_text,
+                        "each boundary id may be given once (" +
+                          std::to_string(
+                            gmsh.curved_boundaries.back().boundary_id) +
+                          " is given twice)");
+        }
     check_input(gmsh.curved_boundaries.empty() || scene == SceneType::gmsh,
                 "Mesh/Gmsh/Curved boundaries",
                 gmsh.curved_boundaries_text,

@@ -2,6 +2,7 @@
 // (one Epetra matrix over all blocks) and its solves, by the sparse direct
 // solver (with GMRES on old factors) or by GMRES with the block
 // preconditioner.
+#include <deal.II/lac/exceptions.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_index_access.h>

@@ -27,8 +27,6 @@
 //    initial crack's own energy: |energy_residual| <= 2 % of W_ext at
 //    every step before the peak.
 // The compared output holds these quantities at 5 significant digits.
-// Plane strain is the problem the thin slab of the three-dimensional
-// copy (tests/sent_notch's mesh) stands for, at a fraction of the cost.
 #include "../tests.h"
 
 using namespace dealii;
@@ -59,7 +57,8 @@ namespace
            const double       end)
   {
     const std::string body = std::to_string(id);
-    return "set Dimension = 2\n" + mesh + "subsection Bodies\n  set Material ids = " + body +
+    return "set Dimension = 2\n" + mesh +
+           "subsection Bodies\n  set Material ids = " + body +
            "\nend\nsubsection Body " + body + R"(
   set Shear modulus = 80.77e9
   set Bulk modulus  = 175.0e9
@@ -72,7 +71,8 @@ namespace
   end
 end
 subsection Load stepping
-  set End time          = )" + std::to_string(end) + R"(
+  set End time          = )" +
+           std::to_string(end) + R"(
   set Time step         = 0.05
   set Minimum time step = 1e-4
 end
@@ -169,8 +169,7 @@ end
       << " kN/mm at u = " << data.at("u3_y")[k] * 1e3 << " mm; slit "
       << f_slit[k_slit] << " kN/mm; ratio " << ratio << std::endl
       << "  below the slit's: " << Testing::yes_no(ratio < 1.) << std::endl
-      << "end: Gamma_l / 1 mm = "
-      << data.at("crack_area")[last] / (2. * area)
+      << "end: Gamma_l / 1 mm = " << data.at("crack_area")[last] / (2. * area)
       << ", s >= 0.95 up to x = " << data.at("cracked_max_x")[last] * 1e3
       << " mm" << std::endl
       << "  through the ligament (s >= 0.95 within h of x = 1 mm): "

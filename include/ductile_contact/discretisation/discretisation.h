@@ -45,8 +45,9 @@ namespace DuctileContact
    * point). DoFs are numbered block-wise [u | alpha | s] (Block::*), so a
    * scene without plasticity has an empty alpha block, not zero unknowns.
    *
-   * The mapping is MappingQ(p) when the mesh has curved manifolds (the
-   * round bar) and MappingQ(1) otherwise.
+   * The mapping is MappingQ(p) on every cell when the mesh has curved
+   * manifolds (the round bar, Mesh/Gmsh/Curved boundaries) and MappingQ(1)
+   * otherwise.
    *
    * Owns the DoFHandler, the index sets per block and the hanging-node
    * constraints; knows nothing of the equations.

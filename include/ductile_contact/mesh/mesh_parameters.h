@@ -126,9 +126,10 @@ namespace DuctileContact
     /// elements instead of its chords.
     struct CurvedBoundary
     {
-      unsigned int         boundary_id = 0;
-      dealii::Point<dim>   centre;
+      unsigned int           boundary_id = 0;
+      dealii::Point<dim>     centre;
       dealii::Tensor<1, dim> axis; ///< zero: a circle or a sphere
+      std::string            text; ///< as given, for error messages
     };
 
     struct Gmsh
