@@ -54,6 +54,9 @@ quantities = {
     "ironing": ("F2_x / F2_y at the end", ratio, 0.30175, 1e-3,
                 "benchmarks/contact/ironing/results.md (0.3017 .. 0.3018 "
                 "while sliding)"),
+    "ironing_2d": ("F2_x / F2_y at the end", ratio, 0.30175, 1e-3,
+                   "prm/ironing_2d.prm header (0.30172 .. 0.30177 while "
+                   "sliding, as the slab of prm/ironing.prm)"),
     "ductile_notch": ("peak |F2_y| [N]", largest("F2_y"), 14.9015, 2e-3,
                       "the scene's run of 2026-12-04 (c78e5bc; c02dc65 gives "
                       "14.9015469 too, with the same 438 Newton iterations). "

@@ -41,6 +41,7 @@ declare -A variants=(
   [hertz_sphere]="default output direct amg"
   [hertz_cylinder_2d]="default output"
   [ironing]="default output relative direct"
+  [ironing_2d]="default output"
   [ductile_notch]="default output relative direct best"
   [ductile_notch_2d]="default output"
   [sent_pfm_2d]="default output"
@@ -61,7 +62,7 @@ declare -A settings=(
   [best]="subsection Load stepping;  set Predictor = best linear;end"
 )
 order=(box_compression gmsh_distorted_cube necking_bar two_bodies two_bodies_no_contact
-       block_on_plate hertz_sphere hertz_cylinder_2d ironing ductile_notch ductile_notch_2d sent_pfm_2d
+       block_on_plate hertz_sphere hertz_cylinder_2d ironing ironing_2d ductile_notch ductile_notch_2d sent_pfm_2d
        block_on_strip_2d block_impact_2d
        sent_coarse
        bar_impact)
