@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <fstream>
 #include <limits>
-#include <set>
 #include <sstream>
 
 namespace DuctileContact
@@ -41,13 +40,8 @@ namespace DuctileContact
     {
       const std::string entry = "Mesh/Gmsh/Curved boundaries";
       double            r_min = std::numeric_limits<double>::max(), r_max = 0.;
-      std::set<types::boundary_id> ids;
-      for (const auto &cell : tria.cell_iterators_on_level(0))
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary())
-            ids.insert(face->boundary_id());
-      std::string ids_text;
-      for (const types::boundary_id i : ids)
+      std::string       ids_text;
+      for (const types::boundary_id i : boundary_ids_in_mesh(tria))
         ids_text += (ids_text.empty() ? "" : ", ") + std::to_string(i);
       for (const auto &cell : tria.cell_iterators_on_level(0))
         for (const auto &face : cell->face_iterators())

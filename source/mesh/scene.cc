@@ -78,7 +78,7 @@ namespace DuctileContact
 
 
   std::set<types::boundary_id>
-  boundary_ids_in_mesh(const parallel::distributed::Triangulation<dim> &tria)
+  boundary_ids_in_mesh(const Triangulation<dim> &tria)
   {
     std::set<types::boundary_id> ids;
     for (const auto &cell : tria.cell_iterators_on_level(0))

@@ -62,8 +62,8 @@ namespace DuctileContact
   material_ids_in_mesh(
     const dealii::parallel::distributed::Triangulation<dim> &tria);
 
-  /// Boundary ids present in the (distributed) mesh, on all ranks.
+  /// Boundary ids present in the (distributed) mesh, on all ranks: those
+  /// of the coarse mesh, which every rank holds.
   std::set<dealii::types::boundary_id>
-  boundary_ids_in_mesh(
-    const dealii::parallel::distributed::Triangulation<dim> &tria);
+  boundary_ids_in_mesh(const dealii::Triangulation<dim> &tria);
 } // namespace DuctileContact
