@@ -491,7 +491,7 @@ end
    * .prm text of the coarse copy of the paper's scene (@p scene, a file of
    * prm/, on plate 8 x 5 x 1 and block 2 x 2 x 2 cells, 16 steps of 0.6 mm
    * to 9.6 mm, no field output) used by block_on_plate,
-   * block_on_plate_adaptive and block_on_plate_tearing; @p extra is
+   * block_on_plate_adaptive and tearing_check.h; @p extra is
    * appended (later entries win).
    */
   inline std::string
