@@ -18,7 +18,8 @@
 //    factorise again in double precision;
 //  - gmres-amg (and cg-amg, which is GMRES for coupled systems) with the
 //    block lower-triangular preconditioner, s by AMG and by a direct
-//    factorisation, within an iteration bound;
+//    factorisation, within an iteration bound; with the symmetric
+//    Gauss-Seidel smoother, and with GMRES restarted every 10 iterations;
 //  - the same with whole blocks frozen (their rows hold only a diagonal
 //    entry, as in a staggered iteration): s frozen, and u frozen;
 //  - a layout with s but no alpha (an empty block between two others);
@@ -273,6 +274,16 @@ namespace
                 from_name(phase_field_preconditioner_names(), s);
               check(label + type + (has_s ? ", s by " + s : ""), bound);
             }
+      // The other AMG smoother, and a GMRES restart shorter than the
+      // iterations (the answer only).
+      parameters.type = LinearSolverType::gmres_amg;
+      parameters.phase_field_preconditioner = PhaseFieldPreconditioner::amg;
+      parameters.smoother = AmgSmoother::symmetric_gauss_seidel;
+      check(label + "gmres-amg, symmetric Gauss-Seidel smoother", bound);
+      parameters.smoother      = AmgSmoother::chebyshev;
+      parameters.gmres_restart = 10;
+      check(label + "gmres-amg, GMRES restart 10", 0);
+      parameters.gmres_restart = 100;
     };
 
     assemble(d, d.hanging_node_constraints, 1., K);

@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <ductile_contact/discretisation/bernstein_element.h>
 #include <ductile_contact/solver/block_preconditioner.h>
 #include <ductile_contact/solver/linear_solver.h>
 
@@ -83,6 +84,8 @@ namespace DuctileContact
             }
         }
 
+    make_phase_field_modes();
+
     // The DoFs changed: the monolithic copy is rebuilt on the next solve,
     // and so is the direct solver's analysis.
     monolithic.reset();
@@ -94,6 +97,76 @@ namespace DuctileContact
     failed_reuses         = 0;
     failed_reuse_solves   = 0;
     last_reuse_iterations = 0;
+  }
+
+
+
+  const char *
+  LinearSolver::smoother_type() const
+  {
+    return parameters.smoother == AmgSmoother::chebyshev ?
+             "Chebyshev" :
+             "symmetric Gauss-Seidel";
+  }
+
+
+
+  void
+  LinearSolver::make_phase_field_modes()
+  {
+    phase_field_modes.reset();
+    if (discretisation.dofs_per_block[Block::phase_field] == 0)
+      return;
+    const IndexSet &owned =
+      discretisation.owned_partitioning[Block::phase_field];
+    const types::global_dof_index offset =
+      discretisation.dofs_per_block[Block::displacement] +
+      discretisation.dofs_per_block[Block::hardening];
+    std::vector<int> block_ids;
+    for (const auto i : owned)
+      block_ids.push_back(static_cast<int>(i));
+    const Epetra_Map map(-1,
+                         static_cast<int>(block_ids.size()),
+                         block_ids.data(),
+                         0,
+                         Epetra_MpiComm(
+                           discretisation.dof_handler.get_communicator()));
+    phase_field_modes = std::make_unique<Epetra_MultiVector>(map, 1 + dim);
+
+    std::vector<types::global_dof_index> dof_indices;
+    for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const FiniteElement<dim> &fe = cell->get_fe();
+          dof_indices.resize(fe.n_dofs_per_cell());
+          cell->get_dof_indices(dof_indices);
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            {
+              if (fe.system_to_component_index(i).first !=
+                    Component::phase_field ||
+                  !owned.is_element(dof_indices[i] - offset))
+                continue;
+              // The point whose coordinates are the DoF's coefficient of
+              // the linear functions: the support point, or for the
+              // Bernstein basis (no support points) its Greville point.
+              const auto                base = fe.system_to_base_index(i);
+              const FiniteElement<dim> &base_fe =
+                fe.base_element(base.first.first);
+              const auto *bernstein =
+                dynamic_cast<const BernsteinElement *>(&base_fe);
+              const Point<dim> unit =
+                bernstein ? bernstein->greville_points()[base.second] :
+                            base_fe.unit_support_point(base.second);
+              const Point<dim> x =
+                discretisation.mapping[0].transform_unit_to_real_cell(cell,
+                                                                      unit);
+              const int row =
+                map.LID(static_cast<int>(dof_indices[i] - offset));
+              (*phase_field_modes)[0][row] = 1.;
+              for (unsigned int d = 0; d < dim; ++d)
+                (*phase_field_modes)[1 + d][row] = x[d];
+            }
+        }
   }
 
 
@@ -148,6 +221,7 @@ namespace DuctileContact
     data.higher_order_elements = (discretisation.degree > 1);
     data.smoother_sweeps       = parameters.smoother_sweeps;
     data.aggregation_threshold = parameters.aggregation_threshold;
+    data.smoother_type         = smoother_type();
     Teuchos::ParameterList              ml_list;
     std::unique_ptr<Epetra_MultiVector> unused_modes;
     data.set_parameters(ml_list, unused_modes, A);
@@ -200,7 +274,7 @@ namespace DuctileContact
         // Newton converged linearly).
         SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
           control,
-          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(100,
+          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(parameters.gmres_restart,
                                                                      true));
         gmres.solve(A, xu, bu, amg);
       }

@@ -400,8 +400,27 @@ namespace DuctileContact
                       Patterns::Double(0., 1.));
     prm.add_parameter("AMG smoother sweeps",
                       smoother_sweeps,
-                      "Chebyshev smoother sweeps per AMG level.",
+                      "Smoother sweeps per AMG level (Chebyshev: its "
+                      "polynomial degree).",
                       Patterns::Integer(1, 10));
+    add_option(
+      prm,
+      "AMG smoother",
+      smoother,
+      amg_smoother_names(),
+      "Smoother of every AMG level (u, alpha and s). Chebyshev: a "
+      "polynomial in the diagonally scaled matrix, the same on any number "
+      "of ranks. symmetric Gauss-Seidel: a forward and a backward sweep, "
+      "within each rank's rows (across ranks it is Jacobi-like, so its "
+      "iterations grow with the ranks). On one rank and with contact "
+      "rows it needs a quarter to a half fewer Krylov iterations than "
+      "Chebyshev, each about 1.3x dearer (benchmarks/iterative_solver).");
+    prm.add_parameter("GMRES restart",
+                      gmres_restart,
+                      "Krylov vectors the GMRES of the AMG solvers keeps "
+                      "before it restarts (memory: this many vectors of the "
+                      "system's size per rank).",
+                      Patterns::Integer(10, 2000));
     add_option(
       prm,
       "Phase-field preconditioner",
@@ -409,7 +428,9 @@ namespace DuctileContact
       phase_field_preconditioner_names(),
       "Iterative types with s unknowns: how the s-s diagonal block is "
       "inverted inside the block preconditioner. amg: one ML AMG V-cycle "
-      "(its iterations grow with l_f/h); direct: a sparse LU of that block "
+      "whose near-null space is the constant and the coordinates (the "
+      "linear functions cost the C0IP operator's fourth-order part "
+      "nothing); its iterations still grow with l_f/h; direct: a sparse LU of that block "
       "with the Direct solver package, factorised once per linear solve.");
     prm.leave_subsection();
   }

@@ -177,6 +177,19 @@ namespace DuctileContact
     /// Rigid-body modes on the locally owned displacement DoFs.
     std::unique_ptr<Epetra_MultiVector> rigid_body_modes;
 
+    /// The constant and the dim coordinates on the locally owned DoFs of
+    /// the phase-field block (block-local numbering): the near-null space
+    /// of its AMG. Null without s DoFs.
+    std::unique_ptr<Epetra_MultiVector> phase_field_modes;
+
+    /// deal.II's name of the `AMG smoother`.
+    const char *
+    smoother_type() const;
+
+    /// Makes #phase_field_modes.
+    void
+    make_phase_field_modes();
+
     /**
      * The coupled system as one matrix and two vectors over the global DoF
      * indices (locally_owned_dofs), for Amesos. Blocks (I, J) are indexed

@@ -279,6 +279,22 @@ namespace DuctileContact
     return t;
   }
 
+  /// Linear solver/AMG smoother.
+  enum class AmgSmoother
+  {
+    chebyshev,
+    symmetric_gauss_seidel
+  };
+
+  inline const NameTable<AmgSmoother> &
+  amg_smoother_names()
+  {
+    static const NameTable<AmgSmoother> t{
+      {AmgSmoother::chebyshev, "Chebyshev"},
+      {AmgSmoother::symmetric_gauss_seidel, "symmetric Gauss-Seidel"}};
+    return t;
+  }
+
   struct LinearSolverParameters
   {
     LinearSolverType type          = LinearSolverType::direct;
@@ -297,6 +313,9 @@ namespace DuctileContact
     unsigned int max_iterations        = 2000;
     double       aggregation_threshold = 1.e-4;
     unsigned int smoother_sweeps       = 2;
+    AmgSmoother  smoother              = AmgSmoother::chebyshev;
+    /// Krylov vectors of the AMG solvers' GMRES before it restarts.
+    unsigned int gmres_restart = 100;
     /// amg | direct: approximate inverse of the s-s block (coupled systems).
     PhaseFieldPreconditioner phase_field_preconditioner =
       PhaseFieldPreconditioner::amg;
