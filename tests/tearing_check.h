@@ -59,9 +59,9 @@ namespace Testing
   inline void
   check_tearing(std::ostream &out, const TearingScene &scene)
   {
-    const Testing::Table t   = Testing::run_scene(scene.prm, scene.run_name);
-    const std::size_t    n   = t.at("time").size();
-    const auto           col = [&](const std::string &name, const std::size_t k) {
+    const Testing::Table t = Testing::run_scene(scene.prm, scene.run_name);
+    const std::size_t    n = t.at("time").size();
+    const auto col         = [&](const std::string &name, const std::size_t k) {
       return t.at(name)[k];
     };
     double worst_balance = 0., worst_increment = 0., peak = 0., max_s = 0.,
@@ -89,8 +89,7 @@ namespace Testing
     const std::size_t last = n - 1;
     const std::string J = " J" + scene.per, N = " N" + scene.per;
     out << "energy balance within 1 % of W_ext at every step after the first "
-        << scene.onset_steps << ", " << scene.onset_bound << J
-        << " in those: "
+        << scene.onset_steps << ", " << scene.onset_bound << J << " in those: "
         << Testing::yes_no(worst_balance < 0.01 &&
                            worst_onset < scene.onset_bound)
         << "\n"
@@ -99,12 +98,12 @@ namespace Testing
         << "): " << Testing::yes_no(worst_increment > -1e-9) << "\n"
         << "s in [0, 1] at the nodes and never decreasing (1e-8): "
         << Testing::yes_no(max_s <= 1. + 1e-12 && min_s_change > -1e-8) << "\n"
-        << (scene.bernstein ?
-              std::string("s <= 1 at the quadrature points too "
-                          "(Bernstein coefficients bound the "
-                          "field): ") +
-                Testing::yes_no(max_s_points <= 1. + 1e-12) + "\n" :
-              std::string())
+        << (scene.bernstein
+              ? std::string("s <= 1 at the quadrature points too "
+                            "(Bernstein coefficients bound the "
+                            "field): ") +
+                  Testing::yes_no(max_s_points <= 1. + 1e-12) + "\n"
+              : std::string())
         << "the plate tears (s >= 0.95 across it at the clamp, "
            "max s = 1, end reaction < 10 % of the peak): "
         << Testing::yes_no(col("cracked_min_y", last) < scene.edge &&
@@ -122,10 +121,10 @@ namespace Testing
         << col("hardening_energy", last) << J << ", R_p "
         << col("plastic_energy_released", last) << J << ", D_p "
         << col("plastic_dissipation", last) << J << "\n"
-        << "crack energy " << col("fracture_energy", last) << J
-        << ", friction " << col("contact1_dissipation", last) << J << "\n";
-    std::cout << "worst balance " << worst_balance << ", onset "
-              << worst_onset << ", worst increment " << worst_increment
-              << ", steps " << last << std::endl;
+        << "crack energy " << col("fracture_energy", last) << J << ", friction "
+        << col("contact1_dissipation", last) << J << "\n";
+    std::cout << "worst balance " << worst_balance << ", onset " << worst_onset
+              << ", worst increment " << worst_increment << ", steps " << last
+              << std::endl;
   }
 } // namespace Testing

@@ -279,7 +279,7 @@ namespace DuctileContact
     // without @p modes the constant is the near-null space, ML's default.
     const auto scalar_amg = [&](const TrilinosWrappers::SparseMatrix &A,
                                 TrilinosWrappers::PreconditionAMG    &amg,
-                                const double aggregation_threshold,
+                                const double              aggregation_threshold,
                                 const Epetra_MultiVector *modes = nullptr) {
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.elliptic              = true;
@@ -352,8 +352,8 @@ namespace DuctileContact
                           plain_tolerance(b.l2_norm(), accuracy));
     SolverGMRES<TrilinosWrappers::MPI::BlockVector> gmres(
       control,
-      SolverGMRES<TrilinosWrappers::MPI::BlockVector>::AdditionalData(parameters.gmres_restart,
-                                                                      true));
+      SolverGMRES<TrilinosWrappers::MPI::BlockVector>::AdditionalData(
+        parameters.gmres_restart, true));
     gmres.solve(K, x, b, preconditioner);
     return control.last_step();
   }

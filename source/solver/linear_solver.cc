@@ -104,9 +104,9 @@ namespace DuctileContact
   const char *
   LinearSolver::smoother_type() const
   {
-    return parameters.smoother == AmgSmoother::chebyshev ?
-             "Chebyshev" :
-             "symmetric Gauss-Seidel";
+    return parameters.smoother == AmgSmoother::chebyshev
+             ? "Chebyshev"
+             : "symmetric Gauss-Seidel";
   }
 
 
@@ -155,8 +155,8 @@ namespace DuctileContact
               const auto *bernstein =
                 dynamic_cast<const BernsteinElement *>(&base_fe);
               const Point<dim> unit =
-                bernstein ? bernstein->greville_points()[base.second] :
-                            base_fe.unit_support_point(base.second);
+                bernstein ? bernstein->greville_points()[base.second]
+                          : base_fe.unit_support_point(base.second);
               const Point<dim> x =
                 discretisation.mapping[0].transform_unit_to_real_cell(cell,
                                                                       unit);
@@ -274,8 +274,8 @@ namespace DuctileContact
         // Newton converged linearly).
         SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
           control,
-          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(parameters.gmres_restart,
-                                                                     true));
+          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(
+            parameters.gmres_restart, true));
         gmres.solve(A, xu, bu, amg);
       }
     return control.last_step();

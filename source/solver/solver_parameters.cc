@@ -430,7 +430,8 @@ namespace DuctileContact
       "inverted inside the block preconditioner. amg: one ML AMG V-cycle "
       "whose near-null space is the constant and the coordinates (the "
       "linear functions cost the C0IP operator's fourth-order part "
-      "nothing); its iterations still grow with l_f/h; direct: a sparse LU of that block "
+      "nothing); its iterations still grow with l_f/h; direct: a sparse LU of "
+      "that block "
       "with the Direct solver package, factorised once per linear solve.");
     prm.leave_subsection();
   }

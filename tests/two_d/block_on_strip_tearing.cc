@@ -30,7 +30,7 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                            out = Testing::open_output();
   Testing::TearingScene                    scene;
-  scene.prm = Testing::shipped_scene("block_on_strip_2d.prm") + R"(
+  scene.prm         = Testing::shipped_scene("block_on_strip_2d.prm") + R"(
 subsection Body 0
   subsection Plasticity
     set Hold stiffness factor = 10

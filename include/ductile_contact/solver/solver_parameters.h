@@ -289,9 +289,9 @@ namespace DuctileContact
   inline const NameTable<AmgSmoother> &
   amg_smoother_names()
   {
-    static const NameTable<AmgSmoother> t{
-      {AmgSmoother::chebyshev, "Chebyshev"},
-      {AmgSmoother::symmetric_gauss_seidel, "symmetric Gauss-Seidel"}};
+    static const NameTable<AmgSmoother> t{{AmgSmoother::chebyshev, "Chebyshev"},
+                                          {AmgSmoother::symmetric_gauss_seidel,
+                                           "symmetric Gauss-Seidel"}};
     return t;
   }
 
