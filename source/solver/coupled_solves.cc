@@ -333,10 +333,11 @@ namespace DuctileContact
           {
             // 0.02 beats 1e-4 for the C0IP block (shared docs,
             // performance.md). Near-null space: the constant and the
-            // coordinates, which the fourth-order part does not see; with
+            // coordinates, which the fourth-order part does not see. With
             // the constant alone the aggregates interpolate the linear
-            // functions badly, and the iterations grew 4-5x faster with
-            // the refinement (benchmarks/iterative_solver).
+            // functions badly: in the plane-strain paper scene the
+            // iterations grew 12-fold from the mesh refined once to three
+            // times, against 3-fold (benchmarks/iterative_solver).
             scalar_amg(A, amg_s, 0.02, phase_field_modes.get());
             inverses[Block::phase_field] = [&](auto &y, const auto &r) {
               amg_s.vmult(y, r);

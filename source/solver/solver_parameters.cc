@@ -414,7 +414,8 @@ namespace DuctileContact
       "within each rank's rows (across ranks it is Jacobi-like, so its "
       "iterations grow with the ranks). On one rank and with contact "
       "rows it needs a quarter to a half fewer Krylov iterations than "
-      "Chebyshev, each about 1.3x dearer (benchmarks/iterative_solver).");
+      "Chebyshev, each 2-3x dearer: faster only where Chebyshev breaks "
+      "down (contact on curved surfaces; benchmarks/iterative_solver).");
     prm.add_parameter("GMRES restart",
                       gmres_restart,
                       "Krylov vectors the GMRES of the AMG solvers keeps "

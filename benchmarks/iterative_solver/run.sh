@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Krylov iterations per linear solve against the mesh: each case below is a
+# shipped scene's first steps on its mesh refined r = 0, 1, ... times
+# (Mesh/Global refinements), solved with each variant of `Linear solver`
+# entries; 1 MPI rank (the times are those of one core; on more ranks the
+# aggregates, and the Gauss-Seidel smoother, change with the partition, and
+# so do the counts). report.py writes results.md: unknowns,
+# Newton iterations, Krylov iterations per solve (mean and largest), linear
+# solve time per Newton iteration and the scene's last force, which must be
+# the same for every variant of a case and refinement.
+# Usage: benchmarks/iterative_solver/run.sh [CASE...]   (default: all)
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/../../scripts/env.sh"
+require_build
+
+# case : scene file : End time : refinements : extra entries ('|' separates)
+cases=(
+  "strip_elastic:block_on_strip_2d:4:0 1 2 3 4:Body 0/Fracture = false|Body 0/Plasticity = false"
+  "strip:block_on_strip_2d:4:0 1 2 3:"
+  "ductile_notch_2d:ductile_notch_2d:0.04:0 1 2:"
+  "hertz_cylinder_2d:hertz_cylinder_2d:0.5:0:"
+  "two_bodies:two_bodies:3:0 1:"
+)
+# variant : Linear solver entries ('|' separates)
+variants=(
+  "direct:Type = direct"
+  "gmres-amg:Type = gmres-amg"
+  "gmres-amg-sgs:Type = gmres-amg|AMG smoother = symmetric Gauss-Seidel"
+  "gmres-amg-sgs-r400:Type = gmres-amg|AMG smoother = symmetric Gauss-Seidel|GMRES restart = 400"
+  "gmres-amg-pf-direct:Type = gmres-amg|Phase-field preconditioner = direct"
+)
+selected=("$@")
+
+for entry in "${cases[@]}"; do
+  IFS=: read -r name scene end refinements extra <<< "$entry"
+  if ((${#selected[@]})) && [[ ! " ${selected[*]} " == *" $name "* ]]; then
+    continue
+  fi
+  for r in $refinements; do
+    for v in "${variants[@]}"; do
+      variant=${v%%:*}
+      settings=${v#*:}
+      # The phase-field preconditioners only differ with s unknowns.
+      if [[ $variant == gmres-amg-pf-direct && ( $name == strip_elastic ||
+            $name == hertz_cylinder_2d || $name == two_bodies ) ]]; then
+        continue
+      fi
+      out=$here/runs/$name/r$r-$variant
+      rm -rf "$out"
+      mkdir -p "$out"
+      args=(--set "Mesh/Global refinements = $r"
+            --set "Load stepping/End time = $end"
+            --set "Output/Directory = $out" --set "Output/Interval = 0"
+            --set "Output/Verbosity = 2")
+      IFS='|' read -ra entries <<< "$extra"
+      for e in "${entries[@]}"; do [[ -n $e ]] && args+=(--set "$e"); done
+      IFS='|' read -ra entries <<< "$settings"
+      for e in "${entries[@]}"; do args+=(--set "Linear solver/$e"); done
+      echo "== $name r$r $variant"
+      (cd "$project_root" && mpirun -np 1 "$exe" "${args[@]}" \
+         "$project_root/prm/$scene.prm") > "$out/screen.txt" 2>&1 ||
+        echo "   (failed: see $out/screen.txt)"
+    done
+  done
+done
+python3 "$here/report.py"
