@@ -9,7 +9,7 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, ".."))
-from runs_io import read_statistics, wall_time  # noqa: E402
+from runs_io import find, read_statistics, wall_time  # noqa: E402
 
 force_columns = {"strip_elastic": "F2_y", "strip": "F2_y",
                  "ductile_notch_2d": "F2_y", "hertz_cylinder_2d": "F2_y",
@@ -21,8 +21,7 @@ order = ["direct", "gmres-amg", "gmres-amg-sgs", "gmres-amg-sgs-r400",
 def row(case, refinement, variant, run):
     screen_path = os.path.join(run, "screen.txt")
     screen = open(screen_path).read()
-    m = re.search(r"DoFs: (\d+)", screen)
-    unknowns = m.group(1) if m else "-"
+    unknowns = find(r"DoFs: (\d+)", screen, "-")
     stats = os.path.join(run, "statistics")
     if not os.path.exists(stats) or wall_time(screen_path) is None:
         return f"| {case} | {refinement} | {variant} | {unknowns} | failed | | | |"

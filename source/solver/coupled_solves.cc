@@ -14,7 +14,6 @@
 #include <Epetra_CrsGraph.h>
 #include <Epetra_Map.h>
 #include <Epetra_MpiComm.h>
-#include <Teuchos_ParameterList.hpp>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -268,45 +267,22 @@ namespace DuctileContact
 
     // u: the AMG of the displacement-only solver.
     TrilinosWrappers::PreconditionAMG amg_u;
-    initialize_displacement_amg(K.block(Block::displacement,
-                                        Block::displacement),
-                                amg_u);
+    initialize_amg(K.block(Block::displacement, Block::displacement),
+                   amg_u,
+                   parameters.aggregation_threshold,
+                   rigid_body_modes.get());
     inverses[Block::displacement] = [&](auto &y, const auto &r) {
       amg_u.vmult(y, r);
     };
 
-    // alpha, s: scalar elliptic blocks (mass + Laplacian, + C0IP for s);
-    // without @p modes the constant is the near-null space, ML's default.
-    const auto scalar_amg = [&](const TrilinosWrappers::SparseMatrix &A,
-                                TrilinosWrappers::PreconditionAMG    &amg,
-                                const double              aggregation_threshold,
-                                const Epetra_MultiVector *modes = nullptr) {
-      TrilinosWrappers::PreconditionAMG::AdditionalData data;
-      data.elliptic              = true;
-      data.higher_order_elements = (discretisation.degree > 1);
-      data.smoother_sweeps       = parameters.smoother_sweeps;
-      data.aggregation_threshold = aggregation_threshold;
-      data.smoother_type         = smoother_type();
-      if (!modes)
-        {
-          amg.initialize(A, data);
-          return;
-        }
-      Teuchos::ParameterList              ml_list;
-      std::unique_ptr<Epetra_MultiVector> unused_modes;
-      data.set_parameters(ml_list, unused_modes, A);
-      ml_list.set("null space: type", "pre-computed");
-      ml_list.set("null space: dimension", modes->NumVectors());
-      ml_list.set("null space: vectors", modes->Values());
-      amg.initialize(A, ml_list);
-    };
-
+    // alpha, s: scalar elliptic blocks (mass + Laplacian, + C0IP for s).
     TrilinosWrappers::PreconditionAMG amg_alpha;
     if (discretisation.dofs_per_block[Block::hardening] > 0)
       {
-        scalar_amg(K.block(Block::hardening, Block::hardening),
-                   amg_alpha,
-                   parameters.aggregation_threshold);
+        // The constant is its near-null space, ML's default.
+        initialize_amg(K.block(Block::hardening, Block::hardening),
+                       amg_alpha,
+                       parameters.aggregation_threshold);
         inverses[Block::hardening] = [&](auto &y, const auto &r) {
           amg_alpha.vmult(y, r);
         };
@@ -338,7 +314,7 @@ namespace DuctileContact
             // functions badly: in the plane-strain paper scene the
             // iterations grew 12-fold from the mesh refined once to three
             // times, against 3-fold (benchmarks/iterative_solver).
-            scalar_amg(A, amg_s, 0.02, phase_field_modes.get());
+            initialize_amg(A, amg_s, 0.02, phase_field_modes.get());
             inverses[Block::phase_field] = [&](auto &y, const auto &r) {
               amg_s.vmult(y, r);
             };

@@ -25,6 +25,23 @@ namespace DuctileContact
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// The Epetra map of the indices @p owned of one block (block-local
+    /// numbers), on which the near-null-space vectors of its AMG live.
+    Epetra_Map
+    block_map(const IndexSet &owned, const MPI_Comm comm)
+    {
+      std::vector<int> ids;
+      for (const auto i : owned)
+        ids.push_back(static_cast<int>(i));
+      return Epetra_Map(
+        -1, static_cast<int>(ids.size()), ids.data(), 0, Epetra_MpiComm(comm));
+    }
+  } // namespace
+
+
+
   LinearSolver::LinearSolver(const LinearSolverParameters &parameters,
                              const Discretisation         &discretisation)
       : parameters(parameters)
@@ -45,15 +62,8 @@ namespace DuctileContact
     constexpr unsigned int n_modes = dim * (dim + 1) / 2;
     const IndexSet        &owned =
       discretisation.owned_partitioning[Block::displacement];
-    std::vector<int> global_ids;
-    for (const auto i : owned)
-      global_ids.push_back(static_cast<int>(i));
-    const Epetra_Map map(-1,
-                         static_cast<int>(global_ids.size()),
-                         global_ids.data(),
-                         0,
-                         Epetra_MpiComm(
-                           discretisation.dof_handler.get_communicator()));
+    const Epetra_Map map =
+      block_map(owned, discretisation.dof_handler.get_communicator());
     rigid_body_modes = std::make_unique<Epetra_MultiVector>(map, n_modes);
 
     std::vector<types::global_dof_index> dof_indices;
@@ -101,16 +111,6 @@ namespace DuctileContact
 
 
 
-  const char *
-  LinearSolver::smoother_type() const
-  {
-    return parameters.smoother == AmgSmoother::chebyshev
-             ? "Chebyshev"
-             : "symmetric Gauss-Seidel";
-  }
-
-
-
   void
   LinearSolver::make_phase_field_modes()
   {
@@ -122,15 +122,8 @@ namespace DuctileContact
     const types::global_dof_index offset =
       discretisation.dofs_per_block[Block::displacement] +
       discretisation.dofs_per_block[Block::hardening];
-    std::vector<int> block_ids;
-    for (const auto i : owned)
-      block_ids.push_back(static_cast<int>(i));
-    const Epetra_Map map(-1,
-                         static_cast<int>(block_ids.size()),
-                         block_ids.data(),
-                         0,
-                         Epetra_MpiComm(
-                           discretisation.dof_handler.get_communicator()));
+    const Epetra_Map map =
+      block_map(owned, discretisation.dof_handler.get_communicator());
     phase_field_modes = std::make_unique<Epetra_MultiVector>(map, 1 + dim);
 
     std::vector<types::global_dof_index> dof_indices;
@@ -212,22 +205,29 @@ namespace DuctileContact
 
 
   void
-  LinearSolver::initialize_displacement_amg(
-    const TrilinosWrappers::SparseMatrix &A,
-    TrilinosWrappers::PreconditionAMG    &amg) const
+  LinearSolver::initialize_amg(const TrilinosWrappers::SparseMatrix &A,
+                               TrilinosWrappers::PreconditionAMG    &amg,
+                               const double              aggregation_threshold,
+                               const Epetra_MultiVector *modes) const
   {
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
     data.higher_order_elements = (discretisation.degree > 1);
     data.smoother_sweeps       = parameters.smoother_sweeps;
-    data.aggregation_threshold = parameters.aggregation_threshold;
-    data.smoother_type         = smoother_type();
+    data.aggregation_threshold = aggregation_threshold;
+    data.smoother_type =
+      name_of(amg_smoother_names(), parameters.smoother).c_str();
+    if (!modes)
+      {
+        amg.initialize(A, data);
+        return;
+      }
     Teuchos::ParameterList              ml_list;
     std::unique_ptr<Epetra_MultiVector> unused_modes;
     data.set_parameters(ml_list, unused_modes, A);
     ml_list.set("null space: type", "pre-computed");
-    ml_list.set("null space: dimension", rigid_body_modes->NumVectors());
-    ml_list.set("null space: vectors", rigid_body_modes->Values());
+    ml_list.set("null space: dimension", modes->NumVectors());
+    ml_list.set("null space: vectors", modes->Values());
     amg.initialize(A, ml_list);
   }
 
@@ -257,7 +257,10 @@ namespace DuctileContact
                           same_matrix);
 
     TrilinosWrappers::PreconditionAMG amg;
-    initialize_displacement_amg(A, amg);
+    initialize_amg(A,
+                   amg,
+                   parameters.aggregation_threshold,
+                   rigid_body_modes.get());
 
     SolverControl control(parameters.max_iterations,
                           plain_tolerance(bu.l2_norm(), accuracy));

@@ -160,11 +160,14 @@ namespace DuctileContact
     /// the relative one, or the SolveAccuracy's bound if looser.
     double
     plain_tolerance(double rhs_norm, const SolveAccuracy &accuracy) const;
-    /// ML AMG of the displacement block with the rigid-body modes.
+    /// ML AMG of the block @p A (elliptic, `AMG smoother` and its sweeps)
+    /// with @p aggregation_threshold, and @p modes as its near-null space
+    /// (null: the constant, ML's default).
     void
-    initialize_displacement_amg(
-      const dealii::TrilinosWrappers::SparseMatrix &A,
-      dealii::TrilinosWrappers::PreconditionAMG    &amg) const;
+    initialize_amg(const dealii::TrilinosWrappers::SparseMatrix &A,
+                   dealii::TrilinosWrappers::PreconditionAMG    &amg,
+                   double                    aggregation_threshold,
+                   const Epetra_MultiVector *modes = nullptr) const;
 
     /// Builds #monolithic (pattern and copy positions) from the blocks of K.
     void
@@ -181,10 +184,6 @@ namespace DuctileContact
     /// the phase-field block (block-local numbering): the near-null space
     /// of its AMG. Null without s DoFs.
     std::unique_ptr<Epetra_MultiVector> phase_field_modes;
-
-    /// deal.II's name of the `AMG smoother`.
-    const char *
-    smoother_type() const;
 
     /// Makes #phase_field_modes.
     void

@@ -279,7 +279,8 @@ namespace DuctileContact
     return t;
   }
 
-  /// Linear solver/AMG smoother.
+  /// Linear solver/AMG smoother; the names are those of ML's smoothers
+  /// that TrilinosWrappers::PreconditionAMG takes.
   enum class AmgSmoother
   {
     chebyshev,
