@@ -123,10 +123,10 @@ main(int argc, char **argv)
       }
     const double first = s.at("newton_iterations")[1];
     std::cout << "block on plate: tangent error " << tangent_error
-              << ", Newton in the first step " << first << ", later "
-              << newton << ", sticking "
-              << s.at("contact1_sticking_nodes")[last] << ", slipping "
-              << s.at("contact1_slipping_nodes")[last] << std::endl;
+              << ", Newton in the first step " << first << ", later " << newton
+              << ", sticking " << s.at("contact1_sticking_nodes")[last]
+              << ", slipping " << s.at("contact1_slipping_nodes")[last]
+              << std::endl;
     out << "block on plate, mu_c = 0.2:" << std::endl
         << "  sticking and slipping nodes: "
         << Testing::yes_no(s.at("contact1_sticking_nodes")[last] > 0 &&

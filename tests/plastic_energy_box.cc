@@ -79,14 +79,12 @@ main(int argc, char **argv)
   double residual[2] = {0., 0.}, dissipation[2] = {0., 0.}, work = 0.;
   for (const unsigned int k : {0u, 1u})
     {
-      const double dt    = (k == 0) ? 0.01 : 0.005;
-      const auto   stats = Testing::run_scene(box_prm(dt),
-                                            "plastic_energy_box_" +
-                                              std::to_string(k));
+      const double dt = (k == 0) ? 0.01 : 0.005;
+      const auto   stats =
+        Testing::run_scene(box_prm(dt),
+                           "plastic_energy_box_" + std::to_string(k));
       const std::size_t last = stats.at("time").size() - 1;
-      const auto        at   = [&](const std::string &c) {
-        return stats.at(c)[last];
-      };
+      const auto at  = [&](const std::string &c) { return stats.at(c)[last]; };
       residual[k]    = at("energy_residual");
       dissipation[k] = at("plastic_dissipation");
       work           = at("plastic_work");
@@ -120,8 +118,7 @@ main(int argc, char **argv)
                                  0.5 * at("fracture_energy"))
               << std::endl;
           out << "no history driving work: "
-              << Testing::yes_no(at("history_driving_work") == 0.)
-              << std::endl;
+              << Testing::yes_no(at("history_driving_work") == 0.) << std::endl;
           out << "residual below 1 % of W_ext at every step: "
               << Testing::yes_no(worst_residual < 0.01) << std::endl;
         }

@@ -40,25 +40,25 @@ main()
   // W_p(alpha) ~ 0.005 alpha: samples with alpha in 0.004 ... 0.028 span
   // W_p < w_c, the rounded bracket (w_c ... w_c + w_r, w_r = y_0/100 =
   // 5e-5 here) and W_p > w_c + w_r.
-  p.critical_work_density           = 4.5e-5;
-  const double w_r                  = 0.01 * p.initial_yield;
-  PlasticityParameters plain        = p;
-  plain.degrade_plastic_energy      = false;
+  p.critical_work_density      = 4.5e-5;
+  const double         w_r     = 0.01 * p.initial_yield;
+  PlasticityParameters plain   = p;
+  plain.degrade_plastic_energy = false;
   const DegradationParameters g{p.degradation_a, p.residual_stiffness};
   const PlasticWorkDriver     unused{p.critical_work_density, 1.};
 
   std::mt19937                           gen(7);
   std::uniform_real_distribution<double> d(-1., 1.);
   double release_error = 0., resistance_error = 0., driver_error = 0.,
-         r_error = 0.;
+         r_error     = 0.;
   unsigned int below = 0, rounded = 0, above = 0, yielding = 0;
   for (unsigned int sample = 0; sample < 60; ++sample)
     {
-      auto history = Testing::random_plastic_history(gen, d, 0.);
+      auto history             = Testing::random_plastic_history(gen, d, 0.);
       const Tensor<2, dim> &Fp = history.first;
       PlasticHistory       &h  = history.second;
-      h.alpha            = 0.015 + 0.011 * d(gen);
-      const bool     low = sample % 3 == 0;
+      h.alpha                  = 0.015 + 0.011 * d(gen);
+      const bool     low       = sample % 3 == 0;
       Tensor<2, dim> F =
         Testing::perturbed_identity(gen, d, low ? 0.001 : 0.03);
       if (low)
@@ -67,8 +67,8 @@ main()
       const double s = 0.2 + 0.15 * d(gen), dt = 0.1;
       const double work = plastic_work_density(alpha, p);
       below += work < p.critical_work_density;
-      rounded += work >= p.critical_work_density &&
-                 work < p.critical_work_density + w_r;
+      rounded +=
+        work >= p.critical_work_density && work < p.critical_work_density + w_r;
       above += work >= p.critical_work_density + w_r;
 
       const MaterialResponse m = plastic_update(F, h, alpha, s, dt, p, true);
@@ -77,31 +77,29 @@ main()
         m, alpha, CrackDriverType::elastic_plastic_energy, unused, p);
 
       // 1. -dPsi^p_loc/ds = -g_k'(s) (psi_D - psi^+).
-      const double es = 1e-6;
-      const double dPsi_ds =
-        (plastic_energy_density(alpha, s + es, p) -
-         plastic_energy_density(alpha, s - es, p)) /
-        (2. * es);
-      release_error =
-        std::max(release_error,
-                 std::abs(dPsi_ds - degradation_derivative(s, g) *
-                                      (D.value - m.psi_plus)) /
-                   p.initial_yield);
+      const double es      = 1e-6;
+      const double dPsi_ds = (plastic_energy_density(alpha, s + es, p) -
+                              plastic_energy_density(alpha, s - es, p)) /
+                             (2. * es);
+      release_error = std::max(release_error,
+                               std::abs(dPsi_ds - degradation_derivative(s, g) *
+                                                    (D.value - m.psi_plus)) /
+                                 p.initial_yield);
 
       // 2. The flow resistance is dPsi^p_loc/dalpha.
       const MaterialResponse m_plain =
         plastic_update(F, h, alpha, s, dt, plain, false, m.yielding);
-      const double ea = 1e-7;
+      const double ea         = 1e-7;
       const auto   difference = [&](const double a) {
         return plastic_energy_density(a, s, p) -
                plastic_energy_density(a, s, plain);
       };
-      const double fd = (difference(alpha + ea) - difference(alpha - ea)) /
-                        (2. * ea);
+      const double fd =
+        (difference(alpha + ea) - difference(alpha - ea)) / (2. * ea);
       if (m.yielding)
-        resistance_error = std::max(resistance_error,
-                                    std::abs((m.r - m_plain.r) - fd) /
-                                      p.initial_yield);
+        resistance_error =
+          std::max(resistance_error,
+                   std::abs((m.r - m_plain.r) - fd) / p.initial_yield);
 
       // 3. Derivatives of psi_D and r against central differences.
       const auto response_at = [&](const Tensor<2, dim> &dF,
@@ -117,20 +115,20 @@ main()
                               false,
                               m.yielding);
       };
-      const auto driver_derivative =
-        [&](const Tensor<2, dim> &dF, const double dalpha, const double ds) {
-          return Testing::derivative_4th_order(
-            [&](const double t) {
-              return crack_driving_energy(
-                       response_at(dF, dalpha, ds, t),
-                       alpha + t * dalpha,
-                       CrackDriverType::elastic_plastic_energy,
-                       unused,
-                       p)
-                .value;
-            },
-            1e-5);
-        };
+      const auto driver_derivative = [&](const Tensor<2, dim> &dF,
+                                         const double          dalpha,
+                                         const double          ds) {
+        return Testing::derivative_4th_order(
+          [&](const double t) {
+            return crack_driving_energy(response_at(dF, dalpha, ds, t),
+                                        alpha + t * dalpha,
+                                        CrackDriverType::elastic_plastic_energy,
+                                        unused,
+                                        p)
+              .value;
+          },
+          1e-5);
+      };
       const auto r_derivative =
         [&](const Tensor<2, dim> &dF, const double dalpha, const double ds) {
           return Testing::derivative_4th_order(
@@ -153,8 +151,8 @@ main()
         }
     }
   out << "samples below w_c, in the rounded bracket, above: "
-      << (below >= 5 && rounded >= 5 && above >= 5 ? "at least 5 each" :
-                                                      "too few")
+      << (below >= 5 && rounded >= 5 && above >= 5 ? "at least 5 each"
+                                                   : "too few")
       << std::endl;
   out << "yielding samples: " << (yielding >= 10 ? "at least 10" : "too few")
       << std::endl;
@@ -185,10 +183,10 @@ main()
   out << "phi = 0 below w_c: " << Testing::yes_no(phi(1.9).first == 0.)
       << std::endl;
   out << "phi' continuous at w_c and w_c + w_r (1e-8): "
-      << Testing::yes_no(std::abs(phi(w_c + e).second - phi(w_c - e).second) <
-                           1e-8 &&
-                         std::abs(phi(1.1 * w_c + e).second -
-                                  phi(1.1 * w_c - e).second) < 1e-8)
+      << Testing::yes_no(
+           std::abs(phi(w_c + e).second - phi(w_c - e).second) < 1e-8 &&
+           std::abs(phi(1.1 * w_c + e).second - phi(1.1 * w_c - e).second) <
+             1e-8)
       << std::endl;
   out << "phi(w_c + w_r) = w_r/2, phi(3 w_c) = 2 w_c - w_r/2: "
       << phi(1.1 * w_c).first << " " << phi(3. * w_c).first << std::endl;

@@ -115,6 +115,17 @@ namespace DuctileContact
                "combination at every point, so the bound holds everywhere; an "
                "initial crack and coarsening take the field's values at the "
                "Greville points (doc/model.md section 4.2).");
+    add_option(prm,
+               "Hardening basis",
+               hardening_basis,
+               field_basis_names(),
+               "Basis of the plastic strain alpha (the same Q_p space either "
+               "way). Lagrange: nodal values, between which the field can "
+               "dip below its nodes' values (below 0 next to a plastic zone). "
+               "Bernstein: coefficients, of which alpha is a convex "
+               "combination, so that the bound alpha_n <= alpha of "
+               "Plasticity/Loading condition = bound holds at every point, "
+               "and alpha >= 0 with it (doc/model.md section 3.2).");
     prm.leave_subsection();
 
     declare_lists(prm, material_ids, boundary_ids, contact_pair_numbers);
@@ -285,6 +296,38 @@ namespace DuctileContact
 
 
   void
+  RunParameters::check_loading_conditions()
+  {
+    // The bound alpha_n <= alpha acts on the whole alpha block, so the
+    // plastic bodies must agree on it.
+    const BodyParameters *first = nullptr;
+    for (const BodyParameters &b : bodies)
+      if (b.plasticity)
+        {
+          if (first == nullptr)
+            first = &b;
+          const auto name = [](const BodyParameters &body) {
+            return name_of(loading_condition_names(),
+                           body.plastic.loading_condition);
+          };
+          check_input(b.plastic.loading_condition ==
+                        first->plastic.loading_condition,
+                      b.subsection() + "/Plasticity/Loading condition",
+                      name(b),
+                      "every plastic body must give the same choice (" +
+                        first->subsection() +
+                        "/Plasticity/Loading condition is '" + name(*first) +
+                        "'): the bound alpha_n <= alpha acts on the whole "
+                        "alpha field");
+        }
+    coupling.hardening_bound =
+      first != nullptr &&
+      first->plastic.loading_condition == LoadingCondition::bound;
+  }
+
+
+
+  void
   RunParameters::check()
   {
     check_input(dimension == dim,
@@ -322,6 +365,7 @@ namespace DuctileContact
                   "an initial crack needs the bound s >= s_n "
                   "(Coupling/Irreversibility = bound or history and bound); "
                   "with history alone it would heal");
+    check_loading_conditions();
     for (const ContactPairParameters &c : contact_pairs)
       {
         c.check();

@@ -151,7 +151,8 @@ namespace DuctileContact
       std::make_unique<Discretisation>(triangulation,
                                        parameters.fe_degree,
                                        fields,
-                                       parameters.phase_field_basis);
+                                       parameters.phase_field_basis,
+                                       parameters.hardening_basis);
     probes = std::make_unique<ProbePoints>(parameters.output.probe_points);
 
     // Force scale of the absolute Newton tolerance: mu_max * diameter^2.

@@ -96,9 +96,6 @@ namespace DuctileContact
       , verbose_out(verbose_out)
       , timer(timer)
       , contact(contact)
-      , bound_solver(discretisation.dof_handler.get_communicator(),
-                     Factorisation::lu,
-                     DirectOrdering::metis)
   {
   }
 
@@ -253,6 +250,15 @@ namespace DuctileContact
     // first convergence without it.
     for (BoundState &b : bounds)
       b.engaged = bound_last_solve[b.bound.block()];
+    // alpha_n <= alpha (Plasticity/Loading condition = bound) is engaged
+    // from the first iteration: without it alpha would fall wherever the
+    // stress is below yield, i.e. almost everywhere.
+    if (step.old_solution != nullptr && coupling.hardening_bound &&
+        block_solved(Block::hardening))
+      {
+        bounds.push_back({FieldBound(discretisation, Block::hardening)});
+        bounds.back().engaged = true;
+      }
   }
 
 
@@ -350,6 +356,19 @@ namespace DuctileContact
 
 
 
+  MumpsSolver &
+  CoupledProblem::bound_solver(const unsigned int block)
+  {
+    if (!bound_solvers[block])
+      bound_solvers[block] = std::make_unique<MumpsSolver>(
+        discretisation.dof_handler.get_communicator(),
+        Factorisation::lu,
+        DirectOrdering::metis);
+    return *bound_solvers[block];
+  }
+
+
+
   void
   CoupledProblem::apply_bounds(const Vector &x)
   {
@@ -367,7 +386,7 @@ namespace DuctileContact
                                       x,
                                       *step.old_solution,
                                       constraints,
-                                      bound_solver,
+                                      bound_solver(bound.block()),
                                       max_active_set_sweeps);
           b.n_on_bound = bound.active_size();
           verbose_out << "        active set on the " << bound.field_name()

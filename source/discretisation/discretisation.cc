@@ -16,7 +16,8 @@ namespace DuctileContact
     const parallel::distributed::Triangulation<dim> &tria,
     const unsigned int                               degree,
     const std::map<types::material_id, BodyFields>  &bodies,
-    const FieldBasis                                 phase_field_basis)
+    const FieldBasis                                 phase_field_basis,
+    const FieldBasis                                 hardening_basis)
       : triangulation(tria)
       , degree(degree)
       , bodies(bodies)
@@ -39,7 +40,7 @@ namespace DuctileContact
         fe_collection.push_back(
           FESystem<dim>(FE_Q<dim>(degree),
                         dim,
-                        *scalar(with_alpha, FieldBasis::lagrange),
+                        *scalar(with_alpha, hardening_basis),
                         1,
                         *scalar(with_s, phase_field_basis),
                         1));

@@ -116,6 +116,24 @@ namespace DuctileContact
                "the paper's (37), its first-order truncation, whose plastic "
                "work falls short of int yhat dalpha by about y_0/mu "
                "relative (a negative plastic dissipation).");
+    add_option(
+      prm,
+      "Loading condition",
+      plastic.loading_condition,
+      loading_condition_names(),
+      "Where a point flows and how alpha is kept from falling (doc/model.md "
+      "sections 3.1-3.2). 'pointwise switch': the paper's (50), the yield "
+      "test at each quadrature point, alpha held at alpha_n by a stiff "
+      "penalty (Hold stiffness factor) where it fails; the penalty lets "
+      "alpha creep below yield beside a plastic zone, a negative local "
+      "plastic dissipation of order 1/f, and the Q_p field of alpha can dip "
+      "below 0 between its nodes. 'bound': every point follows the same "
+      "Perzyna law and alpha >= alpha_n is a bound on the alpha DoFs (a "
+      "primal-dual active set, as Coupling/Irreversibility does for s): "
+      "the variational inequality of gradient plasticity, whose local "
+      "plastic dissipation is >= 0; with Finite elements/Hardening basis = "
+      "Bernstein the bound, and alpha >= 0, hold at every point. Every "
+      "plastic body must give the same choice.");
     prm.add_parameter(
       "Hold stiffness factor",
       plastic.hold_stiffness_factor,

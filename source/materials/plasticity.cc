@@ -22,6 +22,33 @@ namespace DuctileContact
     /// plastic_update()).
     constexpr double elastic_direction_floor = 0.1;
 
+    /// Stress scale / y_0 over which the floor of the bound's flow
+    /// direction fades (see direction_floor_squared()).
+    constexpr double direction_floor_fade = 0.25;
+
+    /// eps^2 of the flow direction tau_tr / sqrt(|tau_tr|^2 + eps^2).
+    /// pointwise switch: eps = 0.1 y_0 where chi_p = 0, 0 where it is 1
+    /// (see plastic_update()). bound: no switch, so the floor fades
+    /// smoothly with the trial stress, eps^2 = (0.1 y_0)^2 exp(-2
+    /// (|tau_tr| / (0.25 y_0))^2): 0.1 y_0 where the deviator vanishes
+    /// (a crack's unloading flank, where the unit direction turns at a rate
+    /// 1/|tau_tr|), 2.3e-6 y_0 at the yield surface |tau_tr| = sqrt(2/3)
+    /// y_0, so that the yielding points flow along n_tr to 1e-11.
+    template <typename Number>
+    Number
+    direction_floor_squared(const Number               &norm_tr,
+                            const bool                  yielding,
+                            const PlasticityParameters &p)
+    {
+      const double floor = elastic_direction_floor * p.initial_yield;
+      if (p.loading_condition == LoadingCondition::bound)
+        {
+          const Number x = norm_tr / (direction_floor_fade * p.initial_yield);
+          return floor * floor * std::exp(-2. * x * x);
+        }
+      return Number(yielding ? 0. : floor * floor);
+    }
+
     template <typename Number>
     Number
     degradation_of(const Number &s, const PlasticityParameters &p)
@@ -230,6 +257,10 @@ namespace DuctileContact
                            history_n.r >
                          0.;
       e.yielding = frozen_yielding ? *frozen_yielding : e.trial_yielding;
+      // With the bound nothing depends on chi_p: it only labels the point
+      // (statistics), and a frozen switch is no branch to keep.
+      if (p.loading_condition == LoadingCondition::bound)
+        e.trial_yielding = e.yielding;
 
       // 2. Plastic flow from the current alpha of the global field, at
       // every point and not clamped at alpha < alpha_n (see the header).
@@ -239,12 +270,11 @@ namespace DuctileContact
         {
           const Number lambda = std::sqrt(1.5) * (alpha - history_n.alpha) / dt;
           const Tensor<2, material_dim, Number> F_inv = invert(F);
-          // Where chi_p = 0 the direction is tau_tr / sqrt(|tau_tr|^2 +
-          // eps^2) (see the header).
-          const double eps =
-            e.yielding ? 0. : elastic_direction_floor * p.initial_yield;
+          // The direction tau_tr / sqrt(|tau_tr|^2 + eps^2) (see the
+          // header).
           const Number inverse_norm =
-            1. / std::sqrt(norm_tr * norm_tr + eps * eps);
+            1. / std::sqrt(norm_tr * norm_tr +
+                           direction_floor_squared(norm_tr, e.yielding, p));
           n_tr = inverse_norm * tau_dev_tr;
           if (p.flow_integration == FlowIntegration::linear)
             {
@@ -284,7 +314,7 @@ namespace DuctileContact
 
       // Local part of (50).
       e.r = p.viscosity * (alpha - history_n.alpha) / dt;
-      if (e.yielding)
+      if (e.yielding || p.loading_condition == LoadingCondition::bound)
         // The stress along the trial direction n_tr (tau_dev stays parallel
         // to it), not |tau_dev|: sqrt(3/2) |tau_dev| = yhat(alpha) has a
         // second root where the flow overshoots and reverses tau_dev, a

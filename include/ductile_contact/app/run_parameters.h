@@ -54,6 +54,7 @@ namespace DuctileContact
     MeshParameters mesh;
     unsigned int   fe_degree         = 2;
     FieldBasis     phase_field_basis = FieldBasis::lagrange;
+    FieldBasis     hardening_basis   = FieldBasis::lagrange;
     // deques: entries are bound by address, so elements must not move.
     std::deque<BodyParameters>    bodies;
     std::deque<BoundaryCondition> boundary_conditions;
@@ -90,6 +91,11 @@ namespace DuctileContact
 
     void
     check();
+
+    /// Plasticity/Loading condition of the plastic bodies (one choice for
+    /// all); sets coupling.hardening_bound.
+    void
+    check_loading_conditions();
 
     /// Mesh/Adaptive refinement against the bodies and contact pairs.
     void

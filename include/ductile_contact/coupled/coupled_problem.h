@@ -169,6 +169,10 @@ namespace DuctileContact
     bool
     any_bound_engaged() const;
 
+    /// The sparse LU of the active-set sweeps of @p block's bound.
+    MumpsSolver &
+    bound_solver(const unsigned int block);
+
     const Discretisation &discretisation;
     /// Why the prescribed values of the current iterate are unusable ("":
     /// they are finite).
@@ -203,9 +207,10 @@ namespace DuctileContact
       bool                            applied    = false;
       dealii::types::global_dof_index n_on_bound = 0;
     };
-    /// The sparse LU of the bounds' active-set sweeps (double precision,
-    /// kept so that its analysis carries over).
-    MumpsSolver bound_solver;
+    /// The sparse LU of each block's bound's active-set sweeps (double
+    /// precision, kept so that its analysis carries over), made when first
+    /// needed.
+    std::array<std::unique_ptr<MumpsSolver>, Block::n_blocks> bound_solvers;
     /// The bounds of the current solve (those that are on).
     std::vector<BoundState> bounds;
     /// Per block: the last converged solve held DoFs on its bound, so the

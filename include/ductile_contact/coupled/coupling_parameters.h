@@ -71,6 +71,10 @@ namespace DuctileContact
     /// Anderson depth m for the staggered phase field (0: plain).
     unsigned int    acceleration_depth = 0;
     Irreversibility irreversibility    = Irreversibility::history_and_bound;
+    /// Whether alpha_n <= alpha is enforced at the alpha DoFs: not an
+    /// entry of this subsection but the plastic bodies' Plasticity/Loading
+    /// condition = bound (set by RunParameters::check()).
+    bool hardening_bound = false;
 
     /// Whether the crack driver keeps the history maximum of psi^+.
     bool

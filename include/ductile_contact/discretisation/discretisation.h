@@ -40,9 +40,9 @@ namespace DuctileContact
    * The finite element layout of doc/model.md section 1 on one distributed
    * mesh: an hp::FECollection whose elements are FESystem(FE_Q(p)^3, alpha, s),
    * where alpha and s are Q_p on bodies that carry them and FE_Nothing
-   * elsewhere: alpha FE_Q, s FE_Q or, with FieldBasis::bernstein,
-   * BernsteinElement (the bound 0 <= s <= 1 on its DoFs then holds at every
-   * point). DoFs are numbered block-wise [u | alpha | s] (Block::*), so a
+   * elsewhere: each FE_Q or, with FieldBasis::bernstein, BernsteinElement
+   * (a bound on its DoFs, 0 <= s <= 1 or alpha_n <= alpha, then holds at
+   * every point). DoFs are numbered block-wise [u | alpha | s] (Block::*), so a
    * scene without plasticity has an empty alpha block, not zero unknowns.
    *
    * The mapping is MappingQ(p) on every cell when the mesh has curved
@@ -59,7 +59,8 @@ namespace DuctileContact
       const dealii::parallel::distributed::Triangulation<dim> &tria,
       const unsigned int                                       degree,
       const std::map<dealii::types::material_id, BodyFields>  &bodies,
-      const FieldBasis phase_field_basis = FieldBasis::lagrange);
+      const FieldBasis phase_field_basis = FieldBasis::lagrange,
+      const FieldBasis hardening_basis   = FieldBasis::lagrange);
 
     /// Distributes and renumbers the DoFs; call after every mesh change.
     void

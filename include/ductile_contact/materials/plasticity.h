@@ -36,6 +36,32 @@ namespace DuctileContact
     return t;
   }
 
+  /// Plasticity/Loading condition: where a point flows and how alpha is
+  /// kept from falling (doc/model.md sections 3.1 and 3.2).
+  enum class LoadingCondition
+  {
+    /// The paper's (50): the yield test chi_p at each quadrature point;
+    /// where it fails, alpha is held at alpha_n by a stiff penalty against
+    /// the force r_n that held it there (plastic_update()).
+    pointwise_switch,
+    /// Every point follows the same Perzyna law, r = eta_p dalpha/dt +
+    /// yhat(alpha) - sqrt(3/2) n : tau_dev, and alpha >= alpha_n is a bound
+    /// on the alpha DoFs (FieldBound): the weak form of the variational
+    /// inequality of rate-dependent gradient plasticity, whose elastic
+    /// region is the bound's active set. Its local plastic dissipation
+    /// is >= 0 up to the time rule's third-order term.
+    bound
+  };
+
+  inline const NameTable<LoadingCondition> &
+  loading_condition_names()
+  {
+    static const NameTable<LoadingCondition> t{
+      {LoadingCondition::pointwise_switch, "pointwise switch"},
+      {LoadingCondition::bound, "bound"}};
+    return t;
+  }
+
   /**
    * Material parameters of the finite-strain visco-plastic J2 model with
    * saturation hardening and crack degradation (doc/model.md sections 2-3).
@@ -58,6 +84,8 @@ namespace DuctileContact
     double volumetric_switch_width = MaterialDefaults::volumetric_switch_width;
     /// How the flow updates (C^p)^{-1}.
     FlowIntegration flow_integration = FlowIntegration::exponential;
+    /// Where a point flows and how alpha is kept from falling.
+    LoadingCondition loading_condition = LoadingCondition::pointwise_switch;
     /// The hold of alpha at points that do not yield, c (alpha - alpha_n),
     /// has c = this factor times the yielding branch's slope (doc/model.md
     /// section 3.1, choice 3) [-].
@@ -218,6 +246,17 @@ namespace DuctileContact
    * At a converged state the yielding points have alpha >= alpha_n except
    * where the gradient term pulls alpha down (statistics
    * min_alpha_change_yielding).
+   *
+   * With LoadingCondition::bound none of the last four choices applies:
+   * every point has the yielding branch's r, with the flow direction
+   * tau_tr / sqrt(|tau_tr|^2 + eps^2) whose floor eps fades smoothly with
+   * |tau_tr| (direction_floor_squared() in the source), and chi_p is a
+   * label for the statistics only. alpha >= alpha_n is the bound on the
+   * alpha DoFs that FieldBound enforces, and r_n is not used. Where r > 0
+   * (below yield) a free DoF's row is balanced by its neighbours through
+   * the gradient term; the local plastic dissipation of a step, w -
+   * Delta Psi^p_loc + r Delta alpha (doc/model.md section 3.2), is then
+   * eta_p Delta alpha^2/dt plus the return map's relaxation, >= 0.
    *
    * The tangents with respect to F, alpha and s are exact: forward-mode
    * automatic differentiation (Sacado SFad with 11 directions) of the same

@@ -36,10 +36,10 @@ namespace DuctileContact
 
   /**
    * Manufactured solution on the unit cube: s = cos(pi x) cos(pi y)
-   * cos(pi z) (the unit square and cos(pi x) cos(pi y) in 2-D), for which d_n s = d_n Lap s = 0 on the boundary, so that
-   * L s = mass s - gradient Lap s + bilaplacian Lap^2 s = f holds with
-   * l(v) = int f v dV + int_dB bilaplacian Lap s d_n v dA (the natural
-   * conditions of a with the boundary data of s).
+   * cos(pi z) (the unit square and cos(pi x) cos(pi y) in 2-D), for which d_n s
+   * = d_n Lap s = 0 on the boundary, so that L s = mass s - gradient Lap s +
+   * bilaplacian Lap^2 s = f holds with l(v) = int f v dV + int_dB bilaplacian
+   * Lap s d_n v dA (the natural conditions of a with the boundary data of s).
    */
   ManufacturedErrors
   solve_manufactured_c0ip(const unsigned int      degree,
