@@ -9,6 +9,10 @@
 //     blended over |J - 1| < delta = 0.05 (Volumetric switch width), with
 //     samples inside the blend; in both, P is the derivative of the
 //     elastic energy Psi^e(F, (C^p_{n+1})^{-1}) (central differences);
+//     the same with Plasticity/Loading condition = bound, where in addition
+//     the backward Euler local plastic dissipation of every sample, w_BE -
+//     Delta Psi^p_loc + r Delta alpha (doc/model.md section 3.2), is at
+//     least eta_p Delta alpha^2/dt (to 1e-12 y_0 |Delta alpha|);
 //  2. det (C^p)^{-1} = 1 to round-off after plastic steps;
 //  3. uniaxial stress (lateral stretch from tau_yy = 0, alpha from the
 //     local hardening equation r = 0 by Newton with dr/dalpha) with a
@@ -34,6 +38,7 @@
 
 #include "tests.h"
 
+#include <limits>
 #include <random>
 
 using namespace dealii;
@@ -67,10 +72,22 @@ main()
   PlasticityParameters p = Testing::unit_plasticity();
 
   // 1. and 2.: tangents and incompressibility in random plastic states,
-  // with the sharp and the blended switch of (17).
-  for (const double delta : {0., 0.05})
+  // with the sharp and the blended switch of (17), and with the loading
+  // condition 'bound' (no pointwise switch of the local equation). With the
+  // bound, the backward Euler local dissipation of the step, w_BE -
+  // Delta Psi^p_loc + r Delta alpha with w_BE = Psi^e(F, C^p_n) - Psi^e(F,
+  // C^p), is eta_p Delta alpha^2/dt plus two non-negative terms (the
+  // relaxation of the stress along the flow, and yhat Delta alpha - Delta
+  // W_p, W_p convex) at every alpha, above or below alpha_n.
+  for (const auto &[delta, loading] :
+       {std::pair(0., LoadingCondition::pointwise_switch),
+        std::pair(0.05, LoadingCondition::pointwise_switch),
+        std::pair(0., LoadingCondition::bound)})
     {
       p.volumetric_switch_width = delta;
+      p.loading_condition       = loading;
+      const bool bound          = loading == LoadingCondition::bound;
+      double     worst_dissipation = std::numeric_limits<double>::max();
       std::mt19937                           gen(7);
       std::uniform_real_distribution<double> d(-1., 1.);
       double       worst = 0, worst_driver = 0, det_error = 0, energy_error = 0;
@@ -91,6 +108,20 @@ main()
           const double           s = 0.3, dt = 0.1;
           const MaterialResponse r =
             plastic_update(F, h, alpha, s, dt, p, true);
+          {
+            const double dalpha = alpha - h.alpha;
+            const double work   = elastic_energy(F, h.Cp_inv, s, p) -
+                                elastic_energy(F, r.updated.Cp_inv, s, p);
+            const double local =
+              work -
+              (plastic_energy_density(alpha, s, p) -
+               plastic_energy_density(h.alpha, s, p)) +
+              r.r * dalpha - p.viscosity * dalpha * dalpha / dt;
+            // Relative to the work of the flow resistance, y_0 |dalpha|.
+            worst_dissipation =
+              std::min(worst_dissipation,
+                       local / (p.initial_yield * std::abs(dalpha)));
+          }
           ++(r.yielding ? plastic : elastic);
           if (r.yielding && std::abs(r.J - 1.) < delta)
             ++blended;
@@ -171,7 +202,11 @@ main()
           energy_error = std::max(energy_error, std::sqrt(e_diff / e_norm));
         }
       out << (delta == 0. ? "sharp switch of (17)" : "blended switch of (17)")
-          << std::endl;
+          << (bound ? ", loading condition bound" : "") << std::endl;
+      if (bound)
+        out << "backward Euler local dissipation >= eta_p dalpha^2/dt "
+               "(1e-12 y_0 |dalpha|): "
+            << Testing::yes_no(worst_dissipation > -1e-12) << std::endl;
       out << "plastic samples: " << (plastic >= 10 ? "at least 10" : "too few")
           << std::endl;
       out << "elastic samples: " << (elastic >= 10 ? "at least 10" : "too few")
@@ -191,8 +226,12 @@ main()
                 << elastic << " elastic, " << blended
                 << " blended samples; worst tangent error " << worst
                 << ", of psi^+ " << worst_driver << ", energy error "
-                << energy_error << ", det error " << det_error << std::endl;
+                << energy_error << ", det error " << det_error
+                << ", local dissipation less the viscous part / (y_0 "
+                   "|dalpha|) down to "
+                << worst_dissipation << std::endl;
     }
+  p.loading_condition = LoadingCondition::pointwise_switch;
   // The blended volumetric energy stays convex in J at every damage: the
   // pressure dPsi/dJ of a pure dilation rises strictly across the blend
   // (at s = 1 a blend of the weight of (17) has a negative slope there).
