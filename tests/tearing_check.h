@@ -32,6 +32,9 @@ namespace Testing
     /// Phase field in the Bernstein basis: s <= 1 at the quadrature points
     /// is checked too.
     bool bernstein;
+    /// Plasticity/Loading condition = bound with alpha in the Bernstein
+    /// basis: alpha >= 0 at the quadrature points is checked too.
+    bool alpha_bound = false;
   };
 
   /// Input of the coarse copy of prm/block_on_plate_tearing.prm (plate
@@ -55,8 +58,8 @@ namespace Testing
   }
 
   /// Runs @p scene and writes its checks and quantities of interest (5
-  /// significant digits) to @p out.
-  inline void
+  /// significant digits) to @p out; returns the run's statistics.
+  inline Testing::Table
   check_tearing(std::ostream &out, const TearingScene &scene)
   {
     const Testing::Table t = Testing::run_scene(scene.prm, scene.run_name);
@@ -65,7 +68,8 @@ namespace Testing
       return t.at(name)[k];
     };
     double worst_balance = 0., worst_increment = 0., peak = 0., max_s = 0.,
-           max_s_points = 0., min_s_change = 0., history = 0., worst_onset = 0.;
+           max_s_points = 0., min_s_change = 0., history = 0., worst_onset = 0.,
+           min_alpha = 0.;
     for (std::size_t k = 1; k < n; ++k)
       {
         if (k <= scene.onset_steps)
@@ -84,6 +88,7 @@ namespace Testing
         max_s        = std::max(max_s, col("max_s", k));
         max_s_points = std::max(max_s_points, col("max_s_points", k));
         min_s_change = std::min(min_s_change, col("min_s_change", k));
+        min_alpha    = std::min(min_alpha, col("min_alpha", k));
         history = std::max(history, std::abs(col("history_driving_work", k)));
       }
     const std::size_t last = n - 1;
@@ -103,6 +108,11 @@ namespace Testing
                             "(Bernstein coefficients bound the "
                             "field): ") +
                   Testing::yes_no(max_s_points <= 1. + 1e-12) + "\n"
+              : std::string())
+        << (scene.alpha_bound
+              ? std::string("alpha >= 0 at the quadrature points (the bound "
+                            "alpha_n <= alpha on Bernstein coefficients): ") +
+                  Testing::yes_no(min_alpha >= 0.) + "\n"
               : std::string())
         << "the plate tears (s >= 0.95 across it at the clamp, "
            "max s = 1, end reaction < 10 % of the peak): "
@@ -125,6 +135,7 @@ namespace Testing
         << col("contact1_dissipation", last) << J << "\n";
     std::cout << "worst balance " << worst_balance << ", onset " << worst_onset
               << ", worst increment " << worst_increment << ", steps " << last
-              << std::endl;
+              << ", min alpha " << min_alpha << std::endl;
+    return t;
   }
 } // namespace Testing
