@@ -84,11 +84,11 @@ main()
         std::pair(0.05, LoadingCondition::pointwise_switch),
         std::pair(0., LoadingCondition::bound)})
     {
-      p.volumetric_switch_width = delta;
-      p.loading_condition       = loading;
-      const bool bound          = loading == LoadingCondition::bound;
-      double     worst_dissipation = std::numeric_limits<double>::max();
-      std::mt19937                           gen(7);
+      p.volumetric_switch_width      = delta;
+      p.loading_condition            = loading;
+      const bool   bound             = loading == LoadingCondition::bound;
+      double       worst_dissipation = std::numeric_limits<double>::max();
+      std::mt19937 gen(7);
       std::uniform_real_distribution<double> d(-1., 1.);
       double       worst = 0, worst_driver = 0, det_error = 0, energy_error = 0;
       unsigned int plastic = 0, elastic = 0, blended = 0;
@@ -112,11 +112,11 @@ main()
             const double dalpha = alpha - h.alpha;
             const double work   = elastic_energy(F, h.Cp_inv, s, p) -
                                 elastic_energy(F, r.updated.Cp_inv, s, p);
-            const double local =
-              work -
-              (plastic_energy_density(alpha, s, p) -
-               plastic_energy_density(h.alpha, s, p)) +
-              r.r * dalpha - p.viscosity * dalpha * dalpha / dt;
+            const double local = work -
+                                 (plastic_energy_density(alpha, s, p) -
+                                  plastic_energy_density(h.alpha, s, p)) +
+                                 r.r * dalpha -
+                                 p.viscosity * dalpha * dalpha / dt;
             // Relative to the work of the flow resistance, y_0 |dalpha|.
             worst_dissipation =
               std::min(worst_dissipation,

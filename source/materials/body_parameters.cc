@@ -130,14 +130,17 @@ namespace DuctileContact
       "below 0 between its nodes. 'bound': every point follows the same "
       "Perzyna law and alpha >= alpha_n is a bound on the alpha DoFs (a "
       "primal-dual active set, as Coupling/Irreversibility does for s): "
-      "the variational inequality of gradient plasticity, whose local "
-      "plastic dissipation is >= 0; with Finite elements/Hardening basis = "
+      "the variational inequality of gradient plasticity, whose backward "
+      "Euler local plastic dissipation is >= 0 (the trapezoidal plastic "
+      "work of the statistics leaves a time-discretisation error, first "
+      "order in D_p); with Finite elements/Hardening basis = "
       "Bernstein the bound, and alpha >= 0, hold at every point. Every "
       "plastic body must give the same choice.");
     prm.add_parameter(
       "Hold stiffness factor",
       plastic.hold_stiffness_factor,
-      "f of the hold of alpha at points that do not yield, c = f (mu g tr "
+      "Loading condition = pointwise switch only: f of the hold of alpha at "
+      "points that do not yield, c = f (mu g tr "
       "bbar_tr + yhat'(alpha_n)) (doc/model.md section 3.1, choice 3) [-]; "
       "at least 1. The finite hold lets alpha creep at non-yielding points "
       "beside a plastic zone, where the stress is below yield: their plastic "
