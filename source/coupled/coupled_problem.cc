@@ -258,6 +258,7 @@ namespace DuctileContact
       {
         bounds.push_back({FieldBound(discretisation, Block::hardening)});
         bounds.back().engaged = true;
+        bounds.back().chord   = true;
       }
   }
 
@@ -397,7 +398,8 @@ namespace DuctileContact
                                    x,
                                    *step.old_solution,
                                    constraints);
-          b.applied = true;
+          b.applied   = true;
+          b.rows_kept = true;
         }
   }
 
@@ -431,9 +433,14 @@ namespace DuctileContact
     targets.branch_record = &branches;
     targets.branches      = Branches::record;
     last_info             = assemble(targets);
-    for (BoundState &b : bounds)
-      b.applied = false;
-    apply_bounds(x);
+    if (matrix == nullptr)
+      keep_bound_rows(x);
+    else
+      {
+        for (BoundState &b : bounds)
+          b.applied = false;
+        apply_bounds(x);
+      }
     return evaluation(last_info);
   }
 
@@ -465,8 +472,30 @@ namespace DuctileContact
   bool
   CoupledProblem::keeps_tangent() const
   {
-    // The bounds' rows are those of the iterate's active sets.
-    return !any_bound_engaged();
+    // The bounds' rows are those of the iterate's active sets: a tangent
+    // with a bound's rows serves only while that set stays.
+    for (const BoundState &b : bounds)
+      if (b.engaged && !(b.chord && b.applied && b.rows_kept))
+        return false;
+    return true;
+  }
+
+
+
+  void
+  CoupledProblem::keep_bound_rows(const Vector &x)
+  {
+    for (BoundState &b : bounds)
+      if (b.engaged)
+        {
+          TimerOutput::Scope scope(timer, "bound: active set");
+          b.rows_kept = b.bound.keep_active_set(
+            x, *step.old_solution, residual, constraints, newton_rhs);
+          b.bound.to_complementarity(residual,
+                                     x,
+                                     *step.old_solution,
+                                     constraints);
+        }
   }
 
 
@@ -474,7 +503,7 @@ namespace DuctileContact
   ResidualEvaluation
   CoupledProblem::assemble_right_hand_side(const Vector &x)
   {
-    // Without the bound's rows, which would need the tangent.
+    // The bounds' rows only if their active sets stay (keep_bound_rows()).
     Assert(keeps_tangent(), ExcInternalError());
     return assemble_recording(x, nullptr);
   }

@@ -212,6 +212,34 @@ namespace DuctileContact
 
 
 
+  bool
+  FieldBound::keep_active_set(
+    const TrilinosWrappers::MPI::BlockVector &u,
+    const TrilinosWrappers::MPI::BlockVector &old,
+    const TrilinosWrappers::MPI::BlockVector &residual,
+    const AffineConstraints<double>          &constraints,
+    TrilinosWrappers::MPI::BlockVector       &rhs)
+  {
+    const IndexSet kept = active, kept_upper = upper;
+    update_active_set(u, old, residual, constraints);
+    const bool same =
+      Utilities::MPI::min((active == kept && upper == kept_upper) ? 1 : 0,
+                          discretisation.dof_handler.get_communicator()) == 1;
+    if (!same)
+      return false;
+    const auto &x   = u.block(block_index);
+    const auto &x_n = old.block(block_index);
+    auto       &b   = rhs.block(block_index);
+    for (const auto i : active)
+      b[i] = diagonal[i] * (lower(x_n[i]) - x[i]);
+    for (const auto i : upper)
+      b[i] = diagonal[i] * (upper_bound - x[i]);
+    b.compress(VectorOperation::insert);
+    return true;
+  }
+
+
+
   void
   FieldBound::to_complementarity(
     TrilinosWrappers::MPI::BlockVector       &residual,

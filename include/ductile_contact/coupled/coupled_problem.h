@@ -206,7 +206,16 @@ namespace DuctileContact
       bool                            engaged    = false;
       bool                            applied    = false;
       dealii::types::global_dof_index n_on_bound = 0;
+      /// Whether a chord step may keep the tangent with this bound's rows
+      /// while its active set stays (alpha's; the phase field's set follows
+      /// a growing crack and goes with a fresh tangent every iteration).
+      bool chord = false;
+      /// Whether the last chord assembly found the tangent's active set.
+      bool rows_kept = true;
     };
+    /// The bounds' rows for a chord step (assemble_right_hand_side()).
+    void
+    keep_bound_rows(const Vector &x);
     /// The sparse LU of each block's bound's active-set sweeps (double
     /// precision, kept so that its analysis carries over), made when first
     /// needed.

@@ -133,6 +133,22 @@ namespace DuctileContact
               const dealii::TrilinosWrappers::MPI::BlockVector &u,
               const dealii::TrilinosWrappers::MPI::BlockVector &old) const;
 
+    /**
+     * For a chord step (Newton/Tangent update), which keeps the last
+     * tangent with this bound's rows: the active set of
+     * update_active_set() at the state @p u with residual @p residual (R,
+     * the diagonal recorded from the kept tangent); if it is the one the
+     * tangent holds, on every rank, writes the bound's rows into @p rhs
+     * and returns true. Otherwise the new set is kept and false tells the
+     * caller that the tangent must be assembled again.
+     */
+    bool
+    keep_active_set(const dealii::TrilinosWrappers::MPI::BlockVector &u,
+                    const dealii::TrilinosWrappers::MPI::BlockVector &old,
+                    const dealii::TrilinosWrappers::MPI::BlockVector &residual,
+                    const dealii::AffineConstraints<double>    &constraints,
+                    dealii::TrilinosWrappers::MPI::BlockVector &rhs);
+
     /// Replaces R_x by C in @p residual (the state @p u).
     void
     to_complementarity(
