@@ -5,7 +5,10 @@ Passes (exit 0) when the two statistics files have the same columns and
 steps and agree in every column but the timings (assembly_time,
 solve_time, wall_time) and the solver's work (Newton and linear
 iterations, the observed Newton rate, cut-backs: the iterations depend on
-the partition through round-off and the preconditioner) to 1e-6 of the
+the partition through round-off and the preconditioner; the smallest local
+plastic dissipation, a minimum over the points of values that are zero to
+round-off while nothing flows: -8.8e-6 against -1.2e-5 J/m^3 in two runs of
+the plane-strain paper scene's third step) to 1e-6 of the
 column's scale: for forces the largest force of the table, for lengths the
 largest displacement or length, for energies the largest energy, for
 contact pressures the largest pressure, for alpha columns the largest
@@ -24,7 +27,8 @@ import sys
 
 NOT_COMPARED = {"assembly_time", "solve_time", "wall_time", "newton_iterations",
                 "linear_iterations", "newton_rate", "tangent_error",
-                "staggered_iterations", "contact_augmentations", "cutbacks"}
+                "staggered_iterations", "contact_augmentations", "cutbacks",
+                "min_plastic_dissipation"}
 
 
 def read(name):
