@@ -245,14 +245,16 @@ namespace DuctileContact
         const PlasticEnergySplit split = split_plastic_energy_change(
           history.plastic.alpha, alpha, scratch.s_old[q], s, plastic);
         sums.plastic_energy_release_increment += -split.by_s * JxW;
-        // The local plastic dissipation of the step (doc/model.md
-        // section 3.2): the work of the flow less the stored energy it
-        // gained, plus the energy r dalpha the point received from the rest
-        // of the field through the weak equation (50) (the gradient term;
-        // summed over the points this is the change of the gradient energy
-        // less the numerical dissipation of its backward Euler step).
+        // The local plastic dissipation of the backward Euler step
+        // (doc/model.md section 3.2): the work of the flow at the step's
+        // end deformation less the stored energy it gained, plus the
+        // energy r dalpha the point received from the rest of the field
+        // through the weak equation (50) (the gradient term; summed over
+        // the points this is the change of the gradient energy less the
+        // numerical dissipation of its step).
         const double local_dissipation =
-          work - split.by_alpha + m.r * (alpha - history.plastic.alpha);
+          flow_work(F, history.plastic, m.updated.Cp_inv, s, plastic) -
+          split.by_alpha + m.r * (alpha - history.plastic.alpha);
         sums.min_plastic_dissipation =
           std::min(sums.min_plastic_dissipation, local_dissipation);
       }

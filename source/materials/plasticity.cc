@@ -121,6 +121,57 @@ namespace DuctileContact
       return y * (1. - (1. - degradation_of(s, p)) * slope);
     }
 
+    /// Psi^p_loc(alpha, s) of plastic_energy_density().
+    template <typename Number>
+    Number
+    plastic_energy_of(const Number               &alpha,
+                      const Number               &s,
+                      const PlasticityParameters &p)
+    {
+      const Number work = plastic_work_of(alpha, p);
+      if (!p.degrade_plastic_energy)
+        return work;
+      return work -
+             (1. - degradation_of(s, p)) * degradable_part(work, p).first;
+    }
+
+    /// |alpha - alpha_n| below which step_flow_resistance() takes the
+    /// derivative at the midpoint instead of the difference quotient (whose
+    /// cancellation error would grow as 1e-16 alpha / |alpha - alpha_n|).
+    constexpr double discrete_gradient_floor = 1e-6;
+
+    /**
+     * The flow resistance of a step from alpha_n to alpha in the local
+     * equation r: dPsi^p_loc/dalpha at alpha (backward Euler), or with
+     * LoadingCondition::bound and a degraded plastic energy the discrete
+     * gradient (Psi^p_loc(alpha, s) - Psi^p_loc(alpha_n, s)) / (alpha -
+     * alpha_n) (the derivative at the midpoint when |alpha - alpha_n| <
+     * 1e-6: the two differ there by the third derivative times
+     * dalpha^2/24). Psi^p_loc is convex in alpha unless the plastic energy
+     * is degraded, where the rounded bracket phi makes it soften: the
+     * backward Euler step then stores more than its flow resistance times
+     * dalpha, a negative local dissipation of the order of the second
+     * derivative times dalpha^2; the discrete gradient stores exactly the
+     * work of the flow resistance (doc/model.md section 3.2).
+     */
+    template <typename Number>
+    Number
+    step_flow_resistance(const Number               &alpha,
+                         const double                alpha_n,
+                         const Number               &s,
+                         const PlasticityParameters &p)
+    {
+      if (p.loading_condition != LoadingCondition::bound ||
+          !p.degrade_plastic_energy)
+        return flow_resistance_of(alpha, s, p);
+      const Number step = alpha - alpha_n;
+      if (std::abs(value_of(step)) < discrete_gradient_floor)
+        return flow_resistance_of(Number(0.5 * (alpha + alpha_n)), s, p);
+      return (plastic_energy_of(alpha, s, p) -
+              plastic_energy_of(Number(alpha_n), s, p)) /
+             step;
+    }
+
     /**
      * Tension part q(t) of the volumetric energy, t = J - 1, and q'(t):
      * psi_vol^+ = kappa/2 q(t), psi_vol^- = kappa/2 (t^2 - q(t)), so that
@@ -320,8 +371,8 @@ namespace DuctileContact
         // second root where the flow overshoots and reverses tau_dev, a
         // spurious equilibrium that Newton found in the late neck of the
         // necking bar (force drop within one step while alpha stood still).
-        e.r +=
-          flow_resistance_of(alpha, s, p) - std::sqrt(1.5) * (n_tr * tau_dev);
+        e.r += step_flow_resistance(alpha, history_n.alpha, s, p) -
+               std::sqrt(1.5) * (n_tr * tau_dev);
       else
         {
           // Hold alpha at alpha_n with the yielding branch's slope, against
@@ -367,10 +418,7 @@ namespace DuctileContact
                          const double                s,
                          const PlasticityParameters &p)
   {
-    const double work = plastic_work_of(alpha, p);
-    if (!p.degrade_plastic_energy)
-      return work;
-    return work - (1. - degradation_of(s, p)) * degradable_part(work, p).first;
+    return plastic_energy_of(alpha, s, p);
   }
 
 
@@ -392,6 +440,19 @@ namespace DuctileContact
 
 
   double
+  flow_work(const Tensor<2, material_dim>          &G,
+            const PlasticHistory                   &history_n,
+            const SymmetricTensor<2, material_dim> &Cp_inv,
+            const double                            s,
+            const PlasticityParameters             &p)
+  {
+    return elastic_energy(G, history_n.Cp_inv, s, p) -
+           elastic_energy(G, Cp_inv, s, p);
+  }
+
+
+
+  double
   plastic_work_of_step(const Tensor<2, material_dim>          &F_n,
                        const Tensor<2, material_dim>          &F,
                        const PlasticHistory                   &history_n,
@@ -402,7 +463,7 @@ namespace DuctileContact
   {
     const SymmetricTensor<2, material_dim> &C_n = history_n.Cp_inv;
     const auto release = [&](const Tensor<2, material_dim> &G) {
-      return elastic_energy(G, C_n, s, p) - elastic_energy(G, Cp_inv, s, p);
+      return flow_work(G, history_n, Cp_inv, s, p);
     };
     // The trial yield function of evaluate() at G with the phase field
     // @p phase.

@@ -149,6 +149,20 @@ namespace DuctileContact
                  const PlasticityParameters                     &p);
 
   /**
+   * The work of a step's flow at the deformation @p G [J/m^3]: the
+   * elastic energy the flow (C^p_n)^{-1} -> @p Cp_inv releases there,
+   *   w(G) = Psi^e(G, (C^p_n)^{-1}, s) - Psi^e(G, (C^p)^{-1}, s).
+   * At G = F, the step's end, the backward Euler work w_BE of the local
+   * plastic dissipation (doc/model.md section 3.2).
+   */
+  double
+  flow_work(const dealii::Tensor<2, material_dim>          &G,
+            const PlasticHistory                           &history_n,
+            const dealii::SymmetricTensor<2, material_dim> &Cp_inv,
+            const double                                    s,
+            const PlasticityParameters                     &p);
+
+  /**
    * The plastic work of a step at a material point [J/m^3]: the elastic
    * energy the flow (C^p_n)^{-1} -> @p Cp_inv releases at fixed
    * deformation,
