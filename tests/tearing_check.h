@@ -32,9 +32,13 @@ namespace Testing
     /// Phase field in the Bernstein basis: s <= 1 at the quadrature points
     /// is checked too.
     bool bernstein;
-    /// Plasticity/Loading condition = bound with alpha in the Bernstein
-    /// basis: alpha >= 0 at the quadrature points is checked too.
-    bool alpha_bound = false;
+    /// Plasticity/Loading condition = bound: the local plastic dissipation
+    /// of every point and step is checked to be >= 0 (to the round-off of
+    /// the elastic energy, 1e-14 mu).
+    bool plastic_bound = false;
+    /// With the bound, alpha in the Bernstein basis: alpha >= 0 at the
+    /// quadrature points is checked too.
+    bool alpha_bernstein = false;
   };
 
   /// Input of the coarse copy of prm/block_on_plate_tearing.prm (plate
@@ -69,7 +73,7 @@ namespace Testing
     };
     double worst_balance = 0., worst_increment = 0., peak = 0., max_s = 0.,
            max_s_points = 0., min_s_change = 0., history = 0., worst_onset = 0.,
-           min_alpha = 0.;
+           min_alpha = 0., min_local_dissipation = 0.;
     for (std::size_t k = 1; k < n; ++k)
       {
         if (k <= scene.onset_steps)
@@ -89,6 +93,8 @@ namespace Testing
         max_s_points = std::max(max_s_points, col("max_s_points", k));
         min_s_change = std::min(min_s_change, col("min_s_change", k));
         min_alpha    = std::min(min_alpha, col("min_alpha", k));
+        min_local_dissipation =
+          std::min(min_local_dissipation, col("min_plastic_dissipation", k));
         history = std::max(history, std::abs(col("history_driving_work", k)));
       }
     const std::size_t last = n - 1;
@@ -109,7 +115,13 @@ namespace Testing
                             "field): ") +
                   Testing::yes_no(max_s_points <= 1. + 1e-12) + "\n"
               : std::string())
-        << (scene.alpha_bound
+        << (scene.plastic_bound
+              ? std::string("local plastic dissipation >= 0 at every point "
+                            "and step (1e-14 mu): ") +
+                  Testing::yes_no(min_local_dissipation >= -1e-14 * 26.455e9) +
+                  "\n"
+              : std::string())
+        << (scene.alpha_bernstein
               ? std::string("alpha >= 0 at the quadrature points (the bound "
                             "alpha_n <= alpha on Bernstein coefficients): ") +
                   Testing::yes_no(min_alpha >= 0.) + "\n"
@@ -135,7 +147,8 @@ namespace Testing
         << col("contact1_dissipation", last) << J << "\n";
     std::cout << "worst balance " << worst_balance << ", onset " << worst_onset
               << ", worst increment " << worst_increment << ", steps " << last
-              << ", min alpha " << min_alpha << std::endl;
+              << ", min alpha " << min_alpha << ", min local D_p "
+              << min_local_dissipation << std::endl;
     return t;
   }
 } // namespace Testing

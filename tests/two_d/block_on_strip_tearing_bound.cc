@@ -5,14 +5,16 @@
 // bounds hold at every point. Checks of Testing::check_tearing (balance
 // within 1 % of W_ext after the block's first touch, D_f, D_c, R_p never
 // decrease, s in [0, 1] and never decreasing, s <= 1 and alpha >= 0 at the
-// quadrature points, the strip torn through its thickness), and the
-// plastic dissipation's time-discretisation error: the run is repeated
-// with half the load step, and
-//  - D_p at the end, negative by the trapezoidal plastic work against the
-//    backward Euler hardening equation, halves with the step (first
-//    order: ratio 1.8 ... 2.2; 1.97 measured);
-//  - the smallest local plastic dissipation of any point and step falls
-//    at least 3x (second order per step: 3.6 measured).
+// quadrature points, the strip torn through its thickness), and the plastic
+// dissipation:
+//  - the local plastic dissipation of the backward Euler step (the
+//    statistic min_plastic_dissipation) is >= 0 at every quadrature point
+//    and step, to the round-off of the elastic energy, 1e-14 mu (-1.7e-5
+//    J/m^3 measured, against -1388 J/m^3 with the pointwise switch);
+//  - D_p, the trapezoidal account's, negative by the trapezoid against the
+//    backward Euler hardening equation, halves with the load step (first
+//    order: ratio 1.8 ... 2.2; 2.08 measured) when the run is repeated with
+//    half the step.
 // One rank.
 #include "../tearing_check.h"
 
@@ -67,25 +69,27 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                            out = Testing::open_output();
   Testing::TearingScene                    scene;
-  scene.prm         = strip_prm(2.);
-  scene.run_name    = "block_on_strip_tearing_bound";
-  scene.reaction    = "F2_y";
-  scene.width       = 0.02; // the strip's thickness
-  scene.edge        = 0.002;
-  scene.onset_steps = 3;
-  scene.onset_bound = 0.08;
-  scene.per         = "/m";
-  scene.bernstein   = true;
-  scene.alpha_bound = true;
+  scene.prm             = strip_prm(2.);
+  scene.run_name        = "block_on_strip_tearing_bound";
+  scene.reaction        = "F2_y";
+  scene.width           = 0.02; // the strip's thickness
+  scene.edge            = 0.002;
+  scene.onset_steps     = 3;
+  scene.onset_bound     = 0.08;
+  scene.per             = "/m";
+  scene.bernstein       = true;
+  scene.plastic_bound   = true;
+  scene.alpha_bernstein = true;
   const auto [d_p, local] =
     plastic_dissipation(Testing::check_tearing(out, scene));
   const auto [d_p_half, local_half] = plastic_dissipation(
     Testing::run_scene(strip_prm(1.), scene.run_name + "_dt_half"));
-  const double ratio = d_p / d_p_half, local_ratio = local / local_half;
-  out << "D_p halves with the load step (ratio 1.8 ... 2.2): "
+  const double ratio     = d_p / d_p_half;
+  const double round_off = 1e-14 * 26.455e9; // 1e-14 mu of the strip
+  out << "local plastic dissipation >= 0 at dt/2 too (1e-14 mu): "
+      << Testing::yes_no(local_half >= -round_off) << "\n"
+      << "D_p halves with the load step (ratio 1.8 ... 2.2): "
       << Testing::yes_no(ratio > 1.8 && ratio < 2.2) << "\n"
-      << "smallest local plastic dissipation falls >= 3x with it: "
-      << Testing::yes_no(local_ratio >= 3.) << "\n"
       << std::setprecision(5) << "D_p " << d_p << ", " << d_p_half
       << " J/m at dt, dt/2\n";
   std::cout << "smallest local plastic dissipation " << local << ", "
