@@ -4,12 +4,12 @@
 #include <deal.II/hp/fe_values.h>
 
 #include <ductile_contact/app/application.h>
+#include <ductile_contact/app/physics_modules.h>
 #include <ductile_contact/app/prm_writer.h>
 #include <ductile_contact/app/simulation.h>
 #include <ductile_contact/app/step_controller.h>
 #include <ductile_contact/app/stop_request.h>
 #include <ductile_contact/app/time_integrator.h>
-#include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/core/input_error.h>
 #include <ductile_contact/coupled/coupled_problem.h>
 #include <ductile_contact/coupled/coupled_solver.h>
@@ -181,10 +181,10 @@ namespace DuctileContact
                                         parameters.coupling.crack_history());
     linear_solver =
       std::make_unique<LinearSolver>(parameters.linear_solver, *discretisation);
-    if (!parameters.contact_pairs.empty())
-      contact = std::make_unique<ContactProblem>(parameters.contact_pairs,
-                                                 *discretisation,
-                                                 bodies);
+    modules = make_physics_modules(parameters, *discretisation, bodies);
+    std::vector<PhysicsModule *> module_list;
+    for (const auto &m : modules)
+      module_list.push_back(m.get());
     problem = std::make_unique<CoupledProblem>(*discretisation,
                                                *assembler,
                                                parameters.boundary_conditions,
@@ -192,12 +192,12 @@ namespace DuctileContact
                                                force_scale,
                                                verbose_out,
                                                timer,
-                                               contact.get());
+                                               module_list);
     newton  = std::make_unique<NewtonSolver>(parameters.newton,
                                             *linear_solver,
                                             NewtonMonitor{verbose_out, timer});
     solver  = std::make_unique<CoupledSolver>(
-      parameters.coupling, *problem, *newton, verbose_out, contact.get());
+      parameters.coupling, *problem, *newton, verbose_out, module_list);
     writer = std::make_unique<SolutionWriter>(parameters.output.directory,
                                               parameters.output.format,
                                               *discretisation,
@@ -258,10 +258,10 @@ namespace DuctileContact
       TimerOutput::Scope scope(timer, "setup: rigid-body modes");
       linear_solver->setup();
     }
-    if (contact)
+    for (const auto &m : modules)
       {
-        TimerOutput::Scope scope(timer, "setup: contact surfaces");
-        contact->setup();
+        TimerOutput::Scope scope(timer, "setup: " + m->name());
+        m->setup();
       }
     problem->setup();
 
@@ -326,22 +326,18 @@ namespace DuctileContact
     statistics.add("time", t);
     statistics.add("dt", dt);
     add_boundary_columns(t);
-    double contact_dissipation = 0.;
-    if (contact)
-      for (const ContactPairSummary &c : contact->summary())
-        contact_dissipation += c.dissipation;
+    double module_dissipation = 0.;
+    for (const auto &m : modules)
+      module_dissipation += m->dissipation();
     energy.add_columns(statistics,
                        committed,
                        has_block(Block::hardening),
                        has_block(Block::phase_field),
                        dynamics != nullptr,
-                       contact_dissipation);
+                       module_dissipation);
     add_field_columns();
-    if (contact)
-      {
-        contact->add_columns(statistics);
-        statistics.add("contact_augmentations", report.augmentations);
-      }
+    for (const auto &m : modules)
+      m->add_columns(statistics);
     add_solver_columns(report, cutbacks);
     if (adaptation)
       add_mesh_columns();
@@ -382,11 +378,11 @@ namespace DuctileContact
                   u_ghosted,
                   cell_quantities,
                   dynamics ? &dynamics->current_velocity() : nullptr);
-    if (contact)
-      contact->write_output(parameters.output.directory,
-                            parameters.output.format,
-                            step,
-                            t);
+    for (const auto &m : modules)
+      m->write_output(parameters.output.directory,
+                      parameters.output.format,
+                      step,
+                      t);
   }
 
 
@@ -404,8 +400,8 @@ namespace DuctileContact
     committed = commit(commit_data);
     if (dynamics)
       dynamics->accept();
-    if (contact)
-      contact->commit();
+    for (const auto &m : modules)
+      m->commit();
     energy.add_step(internal_force, increment, committed);
     if (has_block(Block::phase_field))
       {
@@ -464,14 +460,12 @@ namespace DuctileContact
     boost::archive::binary_oarchive ar(text);
     ar << step << t << last_dt << times.wall << times.assembly << times.solve
        << controller << energy << statistics << *writer;
-    std::vector<double>                                      contact_state;
-    std::vector<std::vector<std::pair<double, std::string>>> contact_series;
-    if (contact)
-      {
-        contact_state  = contact->committed_state();
-        contact_series = contact->output_series();
-      }
-    ar << contact_state << contact_series;
+    // One (state, output series) record per module; one empty record
+    // without modules.
+    if (modules.empty())
+      ar << std::vector<double>() << PhysicsModule::OutputSeries();
+    for (const auto &m : modules)
+      ar << m->committed_state() << m->output_series();
     return text.str();
   }
 
@@ -484,17 +478,21 @@ namespace DuctileContact
     boost::archive::binary_iarchive ar(in);
     ar >> step >> t >> last_dt >> earlier.wall >> earlier.assembly >>
       earlier.solve >> controller >> energy >> statistics >> *writer;
-    std::vector<double>                                      contact_state;
-    std::vector<std::vector<std::pair<double, std::string>>> contact_series;
-    ar >> contact_state >> contact_series;
-    if (contact)
+    std::vector<double>         state;
+    PhysicsModule::OutputSeries series;
+    if (modules.empty())
       {
-        contact->restore_committed_state(contact_state);
-        contact->output_series() = contact_series;
+        ar >> state >> series;
+        if (!state.empty())
+          throw InputError("the checkpoint has a contact state, but this run "
+                           "has no contact pairs");
       }
-    else if (!contact_state.empty())
-      throw InputError("the checkpoint has a contact state, but this run "
-                       "has no contact pairs");
+    for (const auto &m : modules)
+      {
+        ar >> state >> series;
+        m->restore_committed_state(state);
+        m->output_series() = series;
+      }
   }
 
 

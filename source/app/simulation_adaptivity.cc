@@ -4,7 +4,6 @@
 
 #include <ductile_contact/app/simulation.h>
 #include <ductile_contact/app/time_integrator.h>
-#include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/coupled/coupled_problem.h>
 #include <ductile_contact/output/solution_writer.h>
 
@@ -49,8 +48,8 @@ namespace DuctileContact
       if (cell->is_locally_owned())
         cells[cell->active_cell_index()] = history.pack(cell);
 
-    if (contact)
-      contact->keep_committed_state();
+    for (const auto &m : modules)
+      m->keep_committed_state();
     const auto redistribute = [&]() {
       setup_dofs();
       trial.reinit(discretisation->owned_partitioning, comm);
@@ -82,8 +81,8 @@ namespace DuctileContact
         throw std::logic_error("adapt_mesh: a cell's history did not arrive");
     old_solution = u;
     u_ghosted    = u;
-    if (contact)
-      contact->transfer_committed_state(old_solution);
+    for (const auto &m : modules)
+      m->transfer_committed_state(old_solution);
     align_hardening_history();
     accepted_force_on_new_mesh();
     writer->mesh_changed();
@@ -115,8 +114,8 @@ namespace DuctileContact
        dynamics ? &dynamics->accepted_terms(old_solution) : nullptr},
       discretisation->hanging_node_constraints,
       targets);
-    if (contact)
-      contact->add_committed_forces(old_solution, energy.last_force());
+    for (const auto &m : modules)
+      m->add_committed_forces(old_solution, energy.last_force());
   }
 
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <set>
+#include <sstream>
 #include <unordered_set>
 
 namespace DuctileContact
@@ -160,7 +161,8 @@ namespace DuctileContact
   bool
   ContactProblem::begin_step(const TrilinosWrappers::MPI::BlockVector &u)
   {
-    bool changed = false;
+    outer_updates = 0;
+    bool changed  = false;
     for (Pair &pair : data)
       {
         pair.slave.update(u, discretisation);
@@ -254,6 +256,47 @@ namespace DuctileContact
 
 
 
+  unsigned int
+  ContactProblem::max_outer_updates() const
+  {
+    unsigned int n = 0;
+    for (const ContactPairParameters &p : pairs)
+      n = std::max(n, p.max_augmentations);
+    return n;
+  }
+
+
+
+  bool
+  ContactProblem::outer_update(std::string &report)
+  {
+    // The summaries are those of the last assembly, before the update.
+    std::ostringstream text;
+    text << "multipliers updated; largest penetration before the update:";
+    for (const ContactPairSummary &summary : summaries)
+      text << " " << summary.max_penetration << " m";
+    const bool done = augment();
+    if (!done)
+      {
+        ++outer_updates;
+        report = text.str();
+      }
+    return done;
+  }
+
+
+
+  double
+  ContactProblem::dissipation() const
+  {
+    double d = 0.;
+    for (const ContactPairSummary &summary : summaries)
+      d += summary.dissipation;
+    return d;
+  }
+
+
+
   void
   ContactProblem::commit()
   {
@@ -340,5 +383,6 @@ namespace DuctileContact
         statistics.add(name + "_max_slip", c.max_slip);
         statistics.add(name + "_dissipation", c.dissipation);
       }
+    statistics.add("contact_augmentations", outer_updates);
   }
 } // namespace DuctileContact

@@ -2,7 +2,6 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <ductile_contact/assembly/scatter.h>
-#include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/coupled/coupled_problem.h>
 #include <ductile_contact/discretisation/constraints.h>
 
@@ -87,7 +86,7 @@ namespace DuctileContact
     const double                         force_scale,
     ConditionalOStream                  &verbose_out,
     TimerOutput                         &timer,
-    ContactProblem                      *contact)
+    const std::vector<PhysicsModule *>  &modules)
       : discretisation(discretisation)
       , assembler(assembler)
       , boundary_conditions(boundary_conditions)
@@ -95,7 +94,7 @@ namespace DuctileContact
       , force_scale(force_scale)
       , verbose_out(verbose_out)
       , timer(timer)
-      , contact(contact)
+      , modules(modules)
   {
   }
 
@@ -113,14 +112,20 @@ namespace DuctileContact
       discretisation, boundary_conditions, 0., nullptr, pattern_constraints);
 
     // Every field couples with every other within a cell (the coupled
-    // [u | alpha | s] tangent); empty blocks cost nothing. Contact writes
-    // rows of every surface DoF (master rows of other ranks).
+    // [u | alpha | s] tangent); empty blocks cost nothing. A module may
+    // write further rows (contact: every surface DoF, master rows of other
+    // ranks).
     std::vector<IndexSet> writable_rows = discretisation.relevant_partitioning;
-    if (contact)
+    for (const PhysicsModule *m : modules)
       {
-        const IndexSet surface = contact->surface_dofs();
-        writable_rows[Block::displacement].add_indices(
-          surface.get_view(0, discretisation.dofs_per_block[0]));
+        const IndexSet          rows  = m->written_rows();
+        types::global_dof_index first = 0;
+        for (unsigned int b = 0; b < Block::n_blocks; ++b)
+          {
+            const types::global_dof_index n = discretisation.dofs_per_block[b];
+            writable_rows[b].add_indices(rows.get_view(first, first + n));
+            first += n;
+          }
       }
     TrilinosWrappers::BlockSparsityPattern sp(discretisation.owned_partitioning,
                                               discretisation.owned_partitioning,
@@ -159,8 +164,8 @@ namespace DuctileContact
     // diagonal the flux pattern of this rank does not hold.
     for (const auto i : discretisation.locally_relevant_dofs)
       sp.add(i, i);
-    if (contact)
-      contact->add_couplings(sp, pattern_constraints);
+    for (const PhysicsModule *m : modules)
+      m->add_couplings(sp, pattern_constraints);
     sp.compress();
     tangent.reinit(sp);
     tangent_pattern = new_pattern_id();
@@ -178,16 +183,17 @@ namespace DuctileContact
   CoupledProblem::begin_step(const StepData &step_data, const Vector &u)
   {
     step = step_data;
-    if (!contact)
+    if (modules.empty())
       return;
-    u_ghosted = u;
-    bool new_couplings;
-    {
-      TimerOutput::Scope scope(timer, "contact: search");
-      new_couplings = contact->begin_step(u_ghosted);
-    }
+    u_ghosted          = u;
+    bool new_couplings = false;
+    for (PhysicsModule *m : modules)
+      {
+        TimerOutput::Scope scope(timer, m->name() + ": begin step");
+        new_couplings = m->begin_step(u_ghosted) || new_couplings;
+      }
     if (new_couplings)
-      setup(); // the candidate pairs changed: new couplings
+      setup(); // e.g. the contact candidates changed: new couplings
   }
 
 
@@ -300,21 +306,20 @@ namespace DuctileContact
   AssemblyInfo
   CoupledProblem::assemble(const AssemblyTargets &targets)
   {
-    // Contact compresses at its end; the bulk terms before it only if it
-    // reads them complete.
-    const AssemblyInfo info =
-      assembler.assemble(u_ghosted,
-                         step,
-                         constraints,
-                         targets,
-                         !contact || contact->needs_compressed_bulk());
-    if (contact)
+    // A module compresses at its end; the bulk terms before the modules
+    // only if one of them reads them complete.
+    bool compressed_bulk = modules.empty();
+    for (const PhysicsModule *m : modules)
+      compressed_bulk = compressed_bulk || m->needs_compressed_bulk();
+    const AssemblyInfo info = assembler.assemble(
+      u_ghosted, step, constraints, targets, compressed_bulk);
+    for (PhysicsModule *m : modules)
       {
         TimerOutput::Scope scope(timer,
-                                 targets.tangent
-                                   ? "contact: integration, tangent"
-                                   : "contact: integration, residual");
-        contact->assemble(u_ghosted, constraints, targets);
+                                 m->name() + (targets.tangent
+                                                ? ": integration, tangent"
+                                                : ": integration, residual"));
+        m->assemble(u_ghosted, constraints, targets);
       }
     return info;
   }
@@ -345,11 +350,14 @@ namespace DuctileContact
       e.round_off.push_back(frozen[b] ? 0.
                                       : std::numeric_limits<double>::epsilon() *
                                           info.residual_magnitude[b]);
-    const std::string contact_fault = contact ? contact->fault() : "";
-    e.admissible                    = !info.inverted && !info.non_finite &&
-                   prescribed_fault.empty() && contact_fault.empty();
+    std::string module_fault;
+    for (const PhysicsModule *m : modules)
+      if (module_fault.empty())
+        module_fault = m->fault();
+    e.admissible = !info.inverted && !info.non_finite &&
+                   prescribed_fault.empty() && module_fault.empty();
     e.inadmissible   = !prescribed_fault.empty() ? prescribed_fault
-                       : !contact_fault.empty()  ? contact_fault
+                       : !module_fault.empty()   ? module_fault
                                                  : assembler.fault(info);
     e.branch_changes = info.switch_flips;
     return e;

@@ -1,4 +1,3 @@
-#include <ductile_contact/contact/contact_problem.h>
 #include <ductile_contact/coupled/coupled_solver.h>
 #include <ductile_contact/solver/anderson_acceleration.h>
 
@@ -23,16 +22,16 @@ namespace DuctileContact
 
 
 
-  CoupledSolver::CoupledSolver(const CouplingParameters &coupling,
-                               CoupledProblem           &problem,
-                               NewtonSolver             &newton,
-                               ConditionalOStream       &verbose_out,
-                               ContactProblem           *contact)
+  CoupledSolver::CoupledSolver(const CouplingParameters           &coupling,
+                               CoupledProblem                     &problem,
+                               NewtonSolver                       &newton,
+                               ConditionalOStream                 &verbose_out,
+                               const std::vector<PhysicsModule *> &modules)
       : coupling(coupling)
       , problem(problem)
       , newton(newton)
       , verbose_out(verbose_out)
-      , contact(contact)
+      , modules(modules)
   {
   }
 
@@ -65,17 +64,13 @@ namespace DuctileContact
             best > 0)
           u = alternatives[best - 1];
       }
-    if (!contact)
+    unsigned int max_updates = 0;
+    for (const PhysicsModule *m : modules)
+      max_updates = std::max(max_updates, m->max_outer_updates());
+    if (max_updates == 0)
       return solve_fields(u);
 
-    StepReport         total;
-    const unsigned int max_augmentations =
-      std::max_element(contact->pairs.begin(),
-                       contact->pairs.end(),
-                       [](const auto &a, const auto &b) {
-                         return a.max_augmentations < b.max_augmentations;
-                       })
-        ->max_augmentations;
+    StepReport total;
     for (unsigned int k = 0;; ++k)
       {
         const StepReport r = solve_fields(u);
@@ -94,22 +89,28 @@ namespace DuctileContact
             total.failure = r.failure;
             return total;
           }
-        if (contact->augment())
+        // Every module updates (not only the first that is unsettled).
+        std::string reports;
+        for (PhysicsModule *m : modules)
+          {
+            std::string report;
+            if (!m->outer_update(report))
+              reports +=
+                (reports.empty() ? "" : "; ") + m->name() + ": " + report;
+          }
+        if (reports.empty())
           {
             total.converged = true;
             return total;
           }
-        if (k + 1 == max_augmentations)
+        if (k + 1 == max_updates)
           {
-            total.failure = "contact penetration above the tolerance after " +
-                            std::to_string(k + 1) + " multiplier updates";
+            total.failure = "not settled after " + std::to_string(k + 1) +
+                            " outer updates (" + reports + ")";
             return total;
           }
-        verbose_out << "      contact multipliers updated (" << k + 1
-                    << "); largest penetration before the update:";
-        for (const ContactPairSummary &summary : contact->summary())
-          verbose_out << " " << summary.max_penetration << " m";
-        verbose_out << std::endl;
+        verbose_out << "      outer update " << k + 1 << ": " << reports
+                    << std::endl;
       }
   }
 

@@ -18,7 +18,11 @@ for d in sorted(glob.glob(os.path.join(here, "runs", "n*")), key=lambda d: int(d
         m = re.search(r"\| " + re.escape(name) + r"\s*\|\s*(\d+)\s*\|\s*([\d.e+-]+)s", screen)
         return (int(m.group(1)), float(m.group(2))) if m else (0, float("nan"))
 
-    search = section("contact: search")
+    # The search is the contact module's begin step ("contact: search" in
+    # runs made before the module lifecycle).
+    search = section("contact: begin step")
+    if search[0] == 0:
+        search = section("contact: search")
     integ = section("contact: integration, tangent")
     resid = section("contact: integration, residual")
     assembly = section("assembly")

@@ -13,6 +13,7 @@
 #include <ductile_contact/assembly/system_assembler.h>
 #include <ductile_contact/discretisation/discretisation.h>
 #include <ductile_contact/discretisation/mesh_adaptation.h>
+#include <ductile_contact/modules/physics_module.h>
 #include <ductile_contact/output/probe_points.h>
 #include <ductile_contact/output/statistics.h>
 #include <ductile_contact/output/tee_stream.h>
@@ -20,10 +21,10 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace DuctileContact
 {
-  class ContactProblem;
   class CoupledProblem;
   class CoupledSolver;
   class LinearSolver;
@@ -199,12 +200,13 @@ namespace DuctileContact
     std::unique_ptr<Discretisation>                              discretisation;
     std::unique_ptr<SystemAssembler>                             assembler;
     std::unique_ptr<LinearSolver>                                linear_solver;
-    std::unique_ptr<ContactProblem>                              contact;
-    std::unique_ptr<ProbePoints>                                 probes;
-    std::unique_ptr<CoupledProblem>                              problem;
-    std::unique_ptr<NewtonSolver>                                newton;
-    std::unique_ptr<CoupledSolver>                               solver;
-    std::unique_ptr<SolutionWriter>                              writer;
+    /// The physics beside the bulk (make_physics_modules()).
+    std::vector<std::unique_ptr<PhysicsModule>> modules;
+    std::unique_ptr<ProbePoints>                probes;
+    std::unique_ptr<CoupledProblem>             problem;
+    std::unique_ptr<NewtonSolver>               newton;
+    std::unique_ptr<CoupledSolver>              solver;
+    std::unique_ptr<SolutionWriter>             writer;
     /// The inertia of a dynamic run (null when quasi-static).
     std::unique_ptr<TimeIntegrator> dynamics;
     /// Mesh/Adaptive refinement (null when off).

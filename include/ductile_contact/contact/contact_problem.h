@@ -14,6 +14,7 @@
 #include <ductile_contact/contact/nodal_complementarity.h>
 #include <ductile_contact/contact/nodal_contact.h>
 #include <ductile_contact/materials/body_parameters.h>
+#include <ductile_contact/modules/physics_module.h>
 #include <ductile_contact/output/output_parameters.h>
 #include <ductile_contact/output/statistics.h>
 
@@ -118,8 +119,10 @@ namespace DuctileContact
    * semi-smooth Newton, whose tangent terms are linear in them, adds each
    * rank's partial derivatives where they were made (condense()). Results are
    * the same on any number of ranks up to round-off.
+   *
+   * The driver sees it as a PhysicsModule.
    */
-  class ContactProblem
+  class ContactProblem : public PhysicsModule
   {
   public:
     ContactProblem(const std::deque<ContactPairParameters> &pairs,
@@ -127,16 +130,22 @@ namespace DuctileContact
                    const std::map<dealii::types::material_id,
                                   const BodyParameters *>  &bodies);
 
+    std::string
+    name() const override
+    {
+      return "contact";
+    }
+
     /// Gathers the surfaces; call after every DoF distribution.
     void
-    setup();
+    setup() override;
 
     /// Whether assemble() needs the bulk terms compressed before it: the
     /// condensation reads the bulk rows of the slave nodes, and another
     /// rank's cells may add to them. Otherwise the bulk assembly can leave
     /// its terms to the one compress at the end of assemble().
     bool
-    needs_compressed_bulk() const
+    needs_compressed_bulk() const override
     {
       return !bulk_rows_here;
     }
@@ -145,32 +154,48 @@ namespace DuctileContact
     /// multipliers to their committed values; returns true when the
     /// candidate couplings changed (the sparsity pattern must be rebuilt).
     bool
-    begin_step(const dealii::TrilinosWrappers::MPI::BlockVector &u);
+    begin_step(const dealii::TrilinosWrappers::MPI::BlockVector &u) override;
 
     /// All DoFs of the contact surfaces (rows the assembly may write).
     dealii::IndexSet
     surface_dofs() const;
 
+    dealii::IndexSet
+    written_rows() const override
+    {
+      return surface_dofs();
+    }
+
     /// Adds the couplings of the current candidates.
     void
-    add_couplings(dealii::TrilinosWrappers::BlockSparsityPattern &sp,
-                  const dealii::AffineConstraints<double> &constraints) const;
+    add_couplings(
+      dealii::TrilinosWrappers::BlockSparsityPattern &sp,
+      const dealii::AffineConstraints<double> &constraints) const override;
 
     /// Adds the contact contributions at @p u (ghosted) to @p targets (which
     /// hold the bulk terms) and compresses them.
     void
     assemble(const dealii::TrilinosWrappers::MPI::BlockVector &u,
              const dealii::AffineConstraints<double>          &constraints,
-             const AssemblyTargets                            &targets);
+             const AssemblyTargets &targets) override;
 
     /// Uzawa update after a converged Newton solve; returns true when every
     /// pair meets its penetration tolerance (then nothing changed).
     bool
     augment();
 
+    /// The largest augmentations per step of the pairs.
+    unsigned int
+    max_outer_updates() const override;
+
+    /// augment(); @p report names the largest penetration of each pair
+    /// before the update.
+    bool
+    outer_update(std::string &report) override;
+
     /// The multipliers of the accepted step become the committed ones.
     void
-    commit();
+    commit() override;
 
     /// Writes the slave surfaces with pressure and gap of the last
     /// assembly in @p format (contact_writer.h; collective, every rank
@@ -179,7 +204,7 @@ namespace DuctileContact
     write_output(const std::string &directory,
                  const OutputFormat format,
                  const unsigned int step,
-                 const double       time);
+                 const double       time) override;
 
     /// Why the state of the last assembly cannot be accepted ("" when it
     /// can): a master face came within reach of a slave face (its overlap
@@ -187,7 +212,7 @@ namespace DuctileContact
     /// the pattern holds no couplings for it. The search radius of the
     /// pair doubles for the next begin_step().
     std::string
-    fault() const;
+    fault() const override;
 
     const std::vector<ContactPairSummary> &
     summary() const
@@ -198,24 +223,28 @@ namespace DuctileContact
     /// Adds the columns contact<number>_... of every pair (its summary
     /// after the last assembly) to the statistics row.
     void
-    add_columns(Statistics &statistics) const;
+    add_columns(Statistics &statistics) const override;
+
+    /// The frictional dissipation of every pair (47) [J].
+    double
+    dissipation() const override;
 
     /// The committed state of every pair (multipliers, tangential
     /// tractions, node positions, dissipation) for a checkpoint: per node a
     /// record that starts with its reference position, since the node
     /// order depends on the partition.
     std::vector<double>
-    committed_state() const;
+    committed_state() const override;
 
     /// Restores committed_state() after setup(); throws InputError when
     /// the surfaces do not match the records.
     void
-    restore_committed_state(const std::vector<double> &state);
+    restore_committed_state(const std::vector<double> &state) override;
 
     /// Before a mesh change (adaptive refinement): keeps the committed
     /// state of the current surfaces for transfer_committed_state().
     void
-    keep_committed_state();
+    keep_committed_state() override;
 
     /**
      * After a mesh change and setup(): the committed state kept by
@@ -229,7 +258,7 @@ namespace DuctileContact
      */
     void
     transfer_committed_state(
-      const dealii::TrilinosWrappers::MPI::BlockVector &accepted);
+      const dealii::TrilinosWrappers::MPI::BlockVector &accepted) override;
 
     /**
      * Adds the contact forces of the committed state at @p u (ghosted) to
@@ -241,12 +270,13 @@ namespace DuctileContact
      * condensed tractions).
      */
     void
-    add_committed_forces(const dealii::TrilinosWrappers::MPI::BlockVector &u,
-                         dealii::TrilinosWrappers::MPI::BlockVector &force);
+    add_committed_forces(
+      const dealii::TrilinosWrappers::MPI::BlockVector &u,
+      dealii::TrilinosWrappers::MPI::BlockVector       &force) override;
 
     /// The series of the contact output files (checkpoints).
-    std::vector<std::vector<std::pair<double, std::string>>> &
-    output_series()
+    OutputSeries &
+    output_series() override
     {
       return output_records;
     }
@@ -254,6 +284,9 @@ namespace DuctileContact
     const std::deque<ContactPairParameters> &pairs;
 
   private:
+    /// Multiplier updates (augment()) since the last begin_step().
+    unsigned int outer_updates = 0;
+
     struct Pair
     {
       unsigned int   index = 0; ///< position in pairs and summaries

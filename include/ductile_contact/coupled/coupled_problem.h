@@ -11,6 +11,7 @@
 #include <ductile_contact/coupled/field_bound.h>
 #include <ductile_contact/discretisation/boundary_condition.h>
 #include <ductile_contact/discretisation/discretisation.h>
+#include <ductile_contact/modules/physics_module.h>
 #include <ductile_contact/solver/nonlinear_problem.h>
 
 #include <array>
@@ -22,17 +23,15 @@
 
 namespace DuctileContact
 {
-  class ContactProblem;
-
   /**
    * The coupled problem R(u, alpha, s) = 0 of one load step (doc/model.md
    * sections 2-5) as Newton sees it (NonlinearProblem): it owns the system
-   * (sparsity pattern with the C0IP and contact couplings, tangent,
-   * right-hand side, residual, internal force) and combines the bulk cells
-   * and C0IP faces (SystemAssembler), the contact pairs (ContactProblem,
-   * if any) and the bounds on the DoFs (FieldBound): s_n <= s <= 1 if
-   * Coupling/Irreversibility asks for it, alpha_n <= alpha if
-   * Coupling/Plastic strain bound does.
+   * (sparsity pattern with the C0IP couplings and those of the modules,
+   * tangent, right-hand side, residual, internal force) and combines the
+   * bulk cells and C0IP faces (SystemAssembler), the physics modules
+   * (PhysicsModule: the contact pairs, if any) and the bounds on the DoFs
+   * (FieldBound): s_n <= s <= 1 if Coupling/Irreversibility asks for it,
+   * alpha_n <= alpha with Plasticity/Loading condition = bound.
    *
    * Prescribed displacements enter through the Newton constraints
    * (make_newton_constraints()): each iterate's update moves the boundary
@@ -65,15 +64,15 @@ namespace DuctileContact
                    const double                         force_scale,
                    dealii::ConditionalOStream          &verbose_out,
                    dealii::TimerOutput                 &timer,
-                   ContactProblem                      *contact = nullptr);
+                   const std::vector<PhysicsModule *>  &modules = {});
 
     /// Sparsity pattern and vectors; call after every DoF distribution.
     void
     setup();
 
-    /// Starts the load step @p step from @p u: the contact search on the
-    /// geometry of @p u (a new sparsity pattern when the candidate pairs
-    /// changed) and the multipliers reset to their committed values.
+    /// Starts the load step @p step from @p u: every module's begin_step()
+    /// on the state @p u (e.g. the contact search; a new sparsity pattern
+    /// when a module's couplings changed).
     void
     begin_step(const StepData &step, const Vector &u);
 
@@ -142,8 +141,8 @@ namespace DuctileContact
     compared_residual(const Vector &x, Vector &r) override;
 
   private:
-    /// Bulk and contact terms at #u_ghosted into @p targets (contact under
-    /// the timer "contact: integration, tangent" or ", residual").
+    /// Bulk and module terms at #u_ghosted into @p targets (each module
+    /// under the timer "<name>: integration, tangent" or ", residual").
     AssemblyInfo
     assemble(const AssemblyTargets &targets);
 
@@ -183,7 +182,7 @@ namespace DuctileContact
     const double                         force_scale;
     dealii::ConditionalOStream          &verbose_out;
     dealii::TimerOutput                 &timer;
-    ContactProblem                      *contact;
+    const std::vector<PhysicsModule *>   modules;
 
     StepData                          step;
     std::array<bool, Block::n_blocks> frozen{{false, false, false}};

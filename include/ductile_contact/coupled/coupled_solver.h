@@ -8,8 +8,6 @@
 
 namespace DuctileContact
 {
-  class ContactProblem;
-
   /// Outcome of one load step: Newton's report summed over the solves of
   /// the step, and what the coupling strategies did.
   struct StepReport : NewtonReport
@@ -17,7 +15,7 @@ namespace DuctileContact
     /// Alternations of the staggered scheme (1 for monolithic; 0 for a
     /// monolithic-staggered step that Newton solved without alternating).
     unsigned int staggered_iterations = 1;
-    /// Contact multiplier updates (Newton solves - 1) of the step.
+    /// Outer updates of the modules (Newton solves - 1) of the step.
     unsigned int augmentations = 0;
     /// What the assembly found at the converged state.
     AssemblyInfo info;
@@ -31,18 +29,19 @@ namespace DuctileContact
    *    alpha) with s frozen, then on s with (u, alpha) frozen, optionally
    *    with Anderson acceleration of s), or monolithic with a staggered
    *    retry of a failed step;
-   *  - with contact, the augmented Lagrangian's outer loop: the coupled
-   *    solve is repeated with updated contact multipliers until every pair
-   *    meets its penetration tolerance (ContactProblem::augment()).
+   *  - the modules' outer loop (PhysicsModule::outer_update(), e.g. the
+   *    augmented Lagrangian of contact): the coupled solve is repeated
+   *    until every module's equations hold as they are (for contact: every
+   *    pair meets its penetration tolerance).
    */
   class CoupledSolver
   {
   public:
-    CoupledSolver(const CouplingParameters   &coupling,
-                  CoupledProblem             &problem,
-                  NewtonSolver               &newton,
-                  dealii::ConditionalOStream &verbose_out,
-                  ContactProblem             *contact = nullptr);
+    CoupledSolver(const CouplingParameters           &coupling,
+                  CoupledProblem                     &problem,
+                  NewtonSolver                       &newton,
+                  dealii::ConditionalOStream         &verbose_out,
+                  const std::vector<PhysicsModule *> &modules = {});
 
     /// Solves the load step @p step from @p u (owned entries), or from the
     /// one of @p alternatives whose residual is smaller than u's and
@@ -56,7 +55,7 @@ namespace DuctileContact
                  &alternatives = {});
 
   private:
-    /// The coupling strategy, without the contact augmentation.
+    /// The coupling strategy, without the modules' outer loop.
     StepReport
     solve_fields(dealii::TrilinosWrappers::MPI::BlockVector &u);
 
@@ -69,10 +68,10 @@ namespace DuctileContact
     newton_solve(dealii::TrilinosWrappers::MPI::BlockVector &u,
                  const std::array<bool, Block::n_blocks>    &frozen);
 
-    const CouplingParameters   &coupling;
-    CoupledProblem             &problem;
-    NewtonSolver               &newton;
-    dealii::ConditionalOStream &verbose_out;
-    ContactProblem             *contact;
+    const CouplingParameters          &coupling;
+    CoupledProblem                    &problem;
+    NewtonSolver                      &newton;
+    dealii::ConditionalOStream        &verbose_out;
+    const std::vector<PhysicsModule *> modules;
   };
 } // namespace DuctileContact
