@@ -5,8 +5,8 @@ namespace DuctileContact
 {
   std::vector<std::unique_ptr<PhysicsModule>>
   make_physics_modules(
-    const RunParameters                                          &parameters,
-    const Discretisation                                         &discretisation,
+    const RunParameters  &parameters,
+    const Discretisation &discretisation,
     const std::map<dealii::types::material_id, const BodyParameters *> &bodies)
   {
     std::vector<std::unique_ptr<PhysicsModule>> modules;

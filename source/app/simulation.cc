@@ -302,15 +302,10 @@ namespace DuctileContact
   Simulation::Times
   Simulation::cumulative_times() const
   {
-    const auto sections = timer.get_summary_data(TimerOutput::total_wall_time);
-    const auto seconds  = [&](const std::string &name) {
-      const auto it = sections.find(name);
-      return it == sections.end() ? 0. : it->second;
-    };
+    const NewtonTimes &newton_times = newton->times();
     return {earlier.wall + MPI_Wtime() - wall_start,
-            earlier.assembly + seconds("assembly") +
-              seconds("assembly (line search)"),
-            earlier.solve + seconds("linear solve")};
+            earlier.assembly + newton_times.assembly,
+            earlier.solve + newton_times.solve};
   }
 
 

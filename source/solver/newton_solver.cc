@@ -15,6 +15,36 @@ namespace DuctileContact
 
   using namespace dealii;
 
+  namespace
+  {
+    /// A section of the timer whose wall time is also added to @p total
+    /// (NewtonSolver::times()).
+    class TimedSection
+    {
+    public:
+      TimedSection(TimerOutput &timer, const std::string &name, double &total)
+          : scope(timer, name)
+          , total(total)
+          , start(MPI_Wtime())
+      {
+      }
+
+      ~TimedSection()
+      {
+        total += MPI_Wtime() - start;
+      }
+
+      TimedSection(const TimedSection &) = delete;
+      TimedSection &
+      operator=(const TimedSection &) = delete;
+
+    private:
+      TimerOutput::Scope scope;
+      double            &total;
+      const double       start;
+    };
+  } // namespace
+
   NewtonSolver::NewtonSolver(const NewtonParameters &parameters,
                              LinearSolver           &linear_solver,
                              const NewtonMonitor    &monitor)
@@ -269,7 +299,9 @@ namespace DuctileContact
         Vector trial = x;
         trial.add(step_length, delta);
         {
-          TimerOutput::Scope scope(monitor.timer, "assembly (line search)");
+          TimedSection scope(monitor.timer,
+                             "assembly (line search)",
+                             spent.assembly);
           trial_evaluation = problem.assemble_residual(trial);
         }
         const Norms &trial_n   = trial_evaluation.norms;
@@ -341,7 +373,7 @@ namespace DuctileContact
   {
     try
       {
-        TimerOutput::Scope scope(monitor.timer, "linear solve");
+        TimedSection scope(monitor.timer, "linear solve", spent.solve);
         delta = 0;
         n_linear =
           linear_solver.solve(problem.system_matrix(),
@@ -437,7 +469,7 @@ namespace DuctileContact
         const bool         pending = problem.begin_iteration(x);
         ResidualEvaluation evaluation;
         {
-          TimerOutput::Scope scope(monitor.timer, "assembly");
+          TimedSection scope(monitor.timer, "assembly", spent.assembly);
           evaluation = chord ? problem.assemble_right_hand_side(x)
                              : problem.assemble_system(x);
         }
@@ -467,7 +499,7 @@ namespace DuctileContact
         if (chord && !problem.keeps_tangent())
           {
             // converged() changed the equations here: their tangent.
-            TimerOutput::Scope scope(monitor.timer, "assembly");
+            TimedSection scope(monitor.timer, "assembly", spent.assembly);
             evaluation = problem.assemble_system(x);
             chord      = false;
           }

@@ -3,8 +3,8 @@
 #include <deal.II/base/types.h>
 
 #include <ductile_contact/app/run_parameters.h>
-#include <ductile_contact/modules/physics_module.h>
 #include <ductile_contact/discretisation/discretisation.h>
+#include <ductile_contact/modules/physics_module.h>
 
 #include <map>
 #include <memory>
@@ -17,7 +17,7 @@ namespace DuctileContact
   /// that names them; everything else sees PhysicsModule.
   std::vector<std::unique_ptr<PhysicsModule>>
   make_physics_modules(
-    const RunParameters                                          &parameters,
-    const Discretisation                                         &discretisation,
+    const RunParameters  &parameters,
+    const Discretisation &discretisation,
     const std::map<dealii::types::material_id, const BodyParameters *> &bodies);
 } // namespace DuctileContact

@@ -61,8 +61,9 @@ namespace DuctileContact
 
     /// Adds the couplings of the current state to @p sp.
     virtual void
-    add_couplings(dealii::TrilinosWrappers::BlockSparsityPattern &sp,
-                  const dealii::AffineConstraints<double> &constraints) const = 0;
+    add_couplings(
+      dealii::TrilinosWrappers::BlockSparsityPattern &sp,
+      const dealii::AffineConstraints<double>        &constraints) const = 0;
 
     /// At the start of a load step, on the state @p u (ghosted); true when
     /// the couplings changed (the sparsity pattern must be rebuilt).
@@ -78,8 +79,8 @@ namespace DuctileContact
     /// terms, and compresses them.
     virtual void
     assemble(const dealii::TrilinosWrappers::MPI::BlockVector &u,
-             const dealii::AffineConstraints<double> &constraints,
-             const AssemblyTargets                   &targets) = 0;
+             const dealii::AffineConstraints<double>          &constraints,
+             const AssemblyTargets                            &targets) = 0;
 
     /// Why the state of the last assembly cannot be accepted ("" when it
     /// can).
@@ -141,8 +142,7 @@ namespace DuctileContact
     /// Adds the forces of the committed state at @p u (ghosted) to @p force
     /// as assemble() adds them to the internal force.
     virtual void
-    add_committed_forces(
-      const dealii::TrilinosWrappers::MPI::BlockVector &u,
-      dealii::TrilinosWrappers::MPI::BlockVector       &force) = 0;
+    add_committed_forces(const dealii::TrilinosWrappers::MPI::BlockVector &u,
+                         dealii::TrilinosWrappers::MPI::BlockVector &force) = 0;
   };
 } // namespace DuctileContact

@@ -44,6 +44,15 @@ namespace DuctileContact
     dealii::TimerOutput        &timer;
   };
 
+  /// Wall time Newton's iterations have spent, summed over its solves [s]:
+  /// the assemblies (those of the line search included) and the linear
+  /// solves (also in the timer's sections "assembly", "assembly (line
+  /// search)" and "linear solve").
+  struct NewtonTimes
+  {
+    double assembly = 0., solve = 0.;
+  };
+
   /**
    * Newton's method for R(x) = 0 on a NonlinearProblem, with the
    * prescribed values imposed through the update (so a shortened step
@@ -80,6 +89,13 @@ namespace DuctileContact
     /// Newton's first iteration from it would see; an inadmissible state
     /// has an infinite one); the first on a tie. One residual assembly per
     /// guess.
+    /// The wall time spent so far.
+    const NewtonTimes &
+    times() const
+    {
+      return spent;
+    }
+
     std::size_t
     best_start(NonlinearProblem                  &problem,
                const std::vector<const Vector *> &starts);
@@ -167,6 +183,7 @@ namespace DuctileContact
     const NewtonParameters &parameters;
     LinearSolver           &linear_solver;
     NewtonMonitor           monitor;
+    NewtonTimes             spent;
     /// Residual norms at the start of the last Newton iterations of the
     /// step, at most Line search memory of them (the newest last).
     std::deque<Norms> recent_norms;
