@@ -266,7 +266,9 @@ namespace DuctileContact
       "corrects small changes: in prm/block_on_plate.prm the crack driver's "
       "loading points that switch on during the first update "
       "(benchmarks/performance). Not while the phase-field bound s >= s_n "
-      "holds DoFs (its rows follow the iterate).");
+      "holds DoFs (its rows follow the iterate); with the bound alpha >= "
+      "alpha_n (Plasticity/Loading condition = bound) while its active set "
+      "stays the one the kept tangent holds.");
     add_option(
       prm,
       "Linear solve accuracy",
@@ -279,7 +281,8 @@ namespace DuctileContact
       "'newton tolerances': in Newton's fast phase (the first iteration of a "
       "solve, and after a full update that cut the residual in units of the "
       "tolerances 10-fold), while the problem's rows do not follow the "
-      "iterate (not while the phase-field bound holds DoFs), also as soon as "
+      "iterate (not while the phase-field bound holds DoFs, nor while the "
+      "alpha bound's active set changes), also as soon as "
       "the linear residual r is far below "
       "Newton's tolerances, sqrt(sum_b (|r_b| / tol_b)^2) <= 0.1 over the "
       "blocks b = u, alpha, s (GMRES on factors measures its residual in that "
