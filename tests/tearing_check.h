@@ -1,8 +1,10 @@
 #pragma once
 // The check of a coarse tearing scene, shared by
 // block_on_plate_tearing_bernstein.cc (3-D, the shipped scene's Bernstein
-// phase field) and two_d/block_on_strip_tearing.cc (plane strain, the
-// Lagrange phase field): see their headers.
+// phase field and loading condition 'bound'), two_d/block_on_strip_tearing.cc
+// (plane strain, the Lagrange phase field, the pointwise switch) and
+// two_d/block_on_strip_tearing_bound.cc (plane strain, the bound, Bernstein
+// alpha and s): see their headers.
 #include "tests.h"
 
 #include <algorithm>
