@@ -82,7 +82,6 @@ namespace DuctileContact
         if (std::isfinite(r.tangent_error))
           total.tangent_error = r.tangent_error;
         total.info             = r.info;
-        total.augmentations    = k;
         total.branch_conflicts = r.branch_conflicts;
         if (!r.converged)
           {

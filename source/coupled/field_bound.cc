@@ -197,16 +197,23 @@ namespace DuctileContact
                                const TrilinosWrappers::MPI::Vector &x,
                                const TrilinosWrappers::MPI::Vector &x_n) const
   {
+    for (const IndexSet *set : {&active, &upper})
+      for (const auto i : *set)
+        K_xx.clear_row(i, diagonal[i]);
+    hold_active_rhs(b, x, x_n);
+  }
+
+
+
+  void
+  FieldBound::hold_active_rhs(TrilinosWrappers::MPI::Vector       &b,
+                              const TrilinosWrappers::MPI::Vector &x,
+                              const TrilinosWrappers::MPI::Vector &x_n) const
+  {
     for (const auto i : active)
-      {
-        K_xx.clear_row(i, diagonal[i]);
-        b[i] = diagonal[i] * (lower(x_n[i]) - x[i]);
-      }
+      b[i] = diagonal[i] * (lower(x_n[i]) - x[i]);
     for (const auto i : upper)
-      {
-        K_xx.clear_row(i, diagonal[i]);
-        b[i] = diagonal[i] * (upper_bound - x[i]);
-      }
+      b[i] = diagonal[i] * (upper_bound - x[i]);
     b.compress(VectorOperation::insert);
   }
 
@@ -227,14 +234,9 @@ namespace DuctileContact
                           discretisation.dof_handler.get_communicator()) == 1;
     if (!same)
       return false;
-    const auto &x   = u.block(block_index);
-    const auto &x_n = old.block(block_index);
-    auto       &b   = rhs.block(block_index);
-    for (const auto i : active)
-      b[i] = diagonal[i] * (lower(x_n[i]) - x[i]);
-    for (const auto i : upper)
-      b[i] = diagonal[i] * (upper_bound - x[i]);
-    b.compress(VectorOperation::insert);
+    hold_active_rhs(rhs.block(block_index),
+                    u.block(block_index),
+                    old.block(block_index));
     return true;
   }
 

@@ -15,8 +15,6 @@ namespace DuctileContact
     /// Alternations of the staggered scheme (1 for monolithic; 0 for a
     /// monolithic-staggered step that Newton solved without alternating).
     unsigned int staggered_iterations = 1;
-    /// Outer updates of the modules (Newton solves - 1) of the step.
-    unsigned int augmentations = 0;
     /// What the assembly found at the converged state.
     AssemblyInfo info;
   };

@@ -175,12 +175,19 @@ namespace DuctileContact
     /// Replaces the rows of A in the block's matrix @p K_xx and in @p b by
     /// the bound reached after a full step, K_ii delta_i = K_ii (x_n,i -
     /// x_i); the one definition of a held row, for constrain() and the
-    /// sweeps of identify_active_set().
+    /// sweeps of identify_active_set() (its right-hand side:
+    /// hold_active_rhs(), also for the chord steps of keep_active_set()).
     void
     hold_active_rows(dealii::TrilinosWrappers::SparseMatrix      &K_xx,
                      dealii::TrilinosWrappers::MPI::Vector       &b,
                      const dealii::TrilinosWrappers::MPI::Vector &x,
                      const dealii::TrilinosWrappers::MPI::Vector &x_n) const;
+
+    /// The right-hand side of the held rows of hold_active_rows().
+    void
+    hold_active_rhs(dealii::TrilinosWrappers::MPI::Vector       &b,
+                    const dealii::TrilinosWrappers::MPI::Vector &x,
+                    const dealii::TrilinosWrappers::MPI::Vector &x_n) const;
 
     const Discretisation &discretisation;
     const unsigned int    block_index;
