@@ -29,37 +29,15 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                            out = Testing::open_output();
-  Testing::TearingScene                    scene;
-  scene.prm         = Testing::shipped_scene("block_on_strip_2d.prm") + R"(
+  const Testing::TearingScene              scene =
+    Testing::strip_tearing_scene(R"(
 subsection Body 0
   subsection Plasticity
     set Hold stiffness factor = 10
   end
-  subsection Fracture
-    set Crack driver                 = elastic and plastic energy
-    set Critical energy release rate = 30e3
-    set Critical work density        = 0
-  end
 end
-subsection Coupling
-  set Irreversibility = bound
-end
-subsection Load stepping
-  set End time                      = 160
-  set Time step                     = 2
-  set Maximum phase-field increment = 0.1
-end
-subsection Output
-  set Interval = 0
-end
-)";
-  scene.run_name    = "block_on_strip_tearing";
-  scene.reaction    = "F2_y";
-  scene.width       = 0.02; // the strip's thickness
-  scene.edge        = 0.002;
-  scene.onset_steps = 3;
-  scene.onset_bound = 0.08;
-  scene.per         = "/m";
-  scene.bernstein   = false;
+)",
+                                 2.,
+                                 "block_on_strip_tearing");
   Testing::check_tearing(out, scene);
 }

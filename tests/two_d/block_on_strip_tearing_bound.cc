@@ -20,10 +20,8 @@
 
 namespace
 {
-  std::string
-  strip_prm(const double time_step)
-  {
-    return Testing::shipped_scene("block_on_strip_2d.prm") + R"(
+  /// The bound with alpha and s in the Bernstein basis.
+  const std::string bound_entries = R"(
 subsection Finite elements
   set Phase-field basis = Bernstein
   set Hardening basis   = Bernstein
@@ -32,26 +30,8 @@ subsection Body 0
   subsection Plasticity
     set Loading condition = bound
   end
-  subsection Fracture
-    set Crack driver                 = elastic and plastic energy
-    set Critical energy release rate = 30e3
-    set Critical work density        = 0
-  end
-end
-subsection Coupling
-  set Irreversibility = bound
-end
-subsection Load stepping
-  set End time                      = 160
-  set Maximum phase-field increment = 0.1
-  set Time step                     = )" +
-           std::to_string(time_step) + R"(
-end
-subsection Output
-  set Interval = 0
 end
 )";
-  }
 
   /// D_p at the end and the smallest local plastic dissipation of the run.
   std::pair<double, double>
@@ -68,26 +48,24 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ofstream                            out = Testing::open_output();
-  Testing::TearingScene                    scene;
-  scene.prm             = strip_prm(2.);
-  scene.run_name        = "block_on_strip_tearing_bound";
-  scene.reaction        = "F2_y";
-  scene.width           = 0.02; // the strip's thickness
-  scene.edge            = 0.002;
-  scene.onset_steps     = 3;
-  scene.onset_bound     = 0.08;
-  scene.per             = "/m";
+  Testing::TearingScene                    scene =
+    Testing::strip_tearing_scene(bound_entries,
+                                 2.,
+                                 "block_on_strip_tearing_bound");
   scene.bernstein       = true;
   scene.plastic_bound   = true;
   scene.alpha_bernstein = true;
   const auto [d_p, local] =
     plastic_dissipation(Testing::check_tearing(out, scene));
   const auto [d_p_half, local_half] = plastic_dissipation(
-    Testing::run_scene(strip_prm(1.), scene.run_name + "_dt_half"));
-  const double ratio     = d_p / d_p_half;
-  const double round_off = 1e-14 * 26.455e9; // 1e-14 mu of the strip
+    Testing::run_scene(Testing::strip_tearing_scene(
+                         bound_entries, 1., "block_on_strip_tearing_bound")
+                         .prm,
+                       scene.run_name + "_dt_half"));
+  const double ratio = d_p / d_p_half;
   out << "local plastic dissipation >= 0 at dt/2 too (1e-14 mu): "
-      << Testing::yes_no(local_half >= -round_off) << "\n"
+      << Testing::yes_no(local_half >= -Testing::local_dissipation_round_off)
+      << "\n"
       << "D_p halves with the load step (ratio 1.8 ... 2.2): "
       << Testing::yes_no(ratio > 1.8 && ratio < 2.2) << "\n"
       << std::setprecision(5) << "D_p " << d_p << ", " << d_p_half
