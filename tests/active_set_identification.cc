@@ -167,7 +167,7 @@ main(int argc, char **argv)
   const auto n_first_by_hand = Utilities::MPI::sum(first.n_elements(), comm);
   const auto [first_free, first_held] = kkt(K_ss, b_s, first);
 
-  MumpsSolver        direct(comm, Factorisation::lu, DirectOrdering::metis);
+  DirectSolve        direct(comm, DirectSolveSettings::exact_lu());
   const unsigned int sweeps = bound.identify_active_set(
     K, b, zero, zero, constraints, direct, max_sweeps);
   const auto n_final = bound.active_size();

@@ -365,14 +365,13 @@ namespace DuctileContact
 
 
 
-  MumpsSolver &
+  DirectSolve &
   CoupledProblem::bound_solver(const unsigned int block)
   {
     if (!bound_solvers[block])
-      bound_solvers[block] = std::make_unique<MumpsSolver>(
+      bound_solvers[block] = std::make_unique<DirectSolve>(
         discretisation.dof_handler.get_communicator(),
-        Factorisation::lu,
-        DirectOrdering::metis);
+        DirectSolveSettings::exact_lu());
     return *bound_solvers[block];
   }
 

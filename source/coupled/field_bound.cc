@@ -97,7 +97,7 @@ namespace DuctileContact
     const TrilinosWrappers::MPI::BlockVector  &u,
     const TrilinosWrappers::MPI::BlockVector  &old,
     const AffineConstraints<double>           &constraints,
-    MumpsSolver                               &direct_solver,
+    DirectSolve                               &direct_solver,
     const unsigned int                         max_sweeps)
   {
     const IndexSet &owned = discretisation.owned_partitioning[block_index];
@@ -121,8 +121,8 @@ namespace DuctileContact
             // The pattern of K_A is that of the block's: the solver's
             // analysis carries over from sweep to sweep and iteration to
             // iteration.
-            direct_solver.factorize(K_A.trilinos_matrix());
-            direct_solver.solve(delta.trilinos_vector(), rhs.trilinos_vector());
+            direct_solver.factorize(K_A);
+            direct_solver.apply(delta, rhs);
           }
         catch (const std::exception &)
           {

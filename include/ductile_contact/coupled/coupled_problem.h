@@ -169,7 +169,7 @@ namespace DuctileContact
     any_bound_engaged() const;
 
     /// The sparse LU of the active-set sweeps of @p block's bound.
-    MumpsSolver &
+    DirectSolve &
     bound_solver(const unsigned int block);
 
     const Discretisation &discretisation;
@@ -218,7 +218,7 @@ namespace DuctileContact
     /// The sparse LU of each block's bound's active-set sweeps (double
     /// precision, kept so that its analysis carries over), made when first
     /// needed.
-    std::array<std::unique_ptr<MumpsSolver>, Block::n_blocks> bound_solvers;
+    std::array<std::unique_ptr<DirectSolve>, Block::n_blocks> bound_solvers;
     /// The bounds of the current solve (those that are on).
     std::vector<BoundState> bounds;
     /// Per block: the last converged solve held DoFs on its bound, so the

@@ -7,7 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ductile_contact/discretisation/discretisation.h>
-#include <ductile_contact/solver/mumps_solver.h>
+#include <ductile_contact/solver/direct_solve.h>
 
 #include <limits>
 #include <string>
@@ -119,7 +119,7 @@ namespace DuctileContact
       const dealii::TrilinosWrappers::MPI::BlockVector  &u,
       const dealii::TrilinosWrappers::MPI::BlockVector  &old,
       const dealii::AffineConstraints<double>           &constraints,
-      MumpsSolver                                       &direct_solver,
+      DirectSolve                                       &direct_solver,
       const unsigned int                                 max_sweeps);
 
     /// |A| summed over ranks.

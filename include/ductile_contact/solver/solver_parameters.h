@@ -321,15 +321,6 @@ namespace DuctileContact
     PhaseFieldPreconditioner phase_field_preconditioner =
       PhaseFieldPreconditioner::amg;
 
-    /// The Amesos package of #direct_solver, for the small auxiliary solves
-    /// that go through Amesos (Amesos_Mumps for mumps).
-    std::string
-    amesos_name() const
-    {
-      return direct_solver == DirectSolver::amesos_klu ? "Amesos_Klu"
-                                                       : "Amesos_Mumps";
-    }
-
     void
     declare(dealii::ParameterHandler &prm);
     void
