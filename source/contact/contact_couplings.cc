@@ -132,8 +132,9 @@ namespace DuctileContact
         }
     };
     add_faces_of(j);
-    // Semi-smooth Newton: node j takes over its hanging nodes' couplings.
-    if (pair.semi_smooth)
+    // A condensing enforcement: node j takes over its hanging nodes'
+    // couplings.
+    if (pair.condenses())
       for (const auto &[h, w] : pair.slave.children[j])
         add_faces_of(h);
     slave_nodes.assign(s.begin(), s.end());
@@ -154,12 +155,9 @@ namespace DuctileContact
     std::vector<types::global_dof_index> master_rows;
     for (const Pair &pair : data)
       {
-        // Semi-smooth Newton: the master rows take the bulk rows of the
-        // slave nodes (condense()).
-        const auto columns =
-          pair.semi_smooth
-            ? slave_row_columns(pair)
-            : std::vector<std::vector<types::global_dof_index>>();
+        // The columns the master rows take besides the contact couplings
+        // (semi-smooth Newton: the bulk rows of the slave nodes).
+        const auto columns = pair.enforcement->master_row_columns(pair);
         // Every rank declares the couplings of every slave node: it may
         // integrate any face pair (linearise_operators()).
         for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
@@ -181,7 +179,7 @@ namespace DuctileContact
                            master_rows.begin(),
                            master_rows.end());
             all_constraints.add_entries_local_to_global(indices, sp, false);
-            if (owned && pair.semi_smooth && !m.empty())
+            if (owned && !columns.empty() && !m.empty())
               all_constraints.add_entries_local_to_global(master_rows,
                                                           columns[j],
                                                           sp,

@@ -153,21 +153,22 @@ namespace DuctileContact
     // Segment-based D and M of every overlapping face pair: each rank
     // integrates an equal share, and all gather the operators (in their
     // order). Nothing is gained by giving the rank that owns the slave
-    // nodes fewer: its condensation (condense()) starts after the gather.
+    // nodes fewer: its condensation starts after the gather.
     const auto near = search(pair, reach(pair));
     add_operators(
       pair, integrate_share(pair, close_face_pairs(pair, near), derivatives));
 
     // Aggregates.
+    const bool lumped = pair.slave_weights() == SlaveWeights::lumped;
     for (unsigned int j = 0; j < n; ++j)
       {
         NodalAggregates &a = pair.aggregates[j];
         for (const auto &[k, d] : pair.D[j])
           {
-            // Semi-smooth Newton: D lumped to node j (the force side is,
-            // contact_problem.h), so that the contact forces do no work
-            // on the weighted gap and slip.
-            const unsigned int node = pair.semi_smooth ? j : k;
+            // A condensing enforcement: D lumped to node j (the force side
+            // is, semi_smooth_newton.h), so that the contact forces do no
+            // work on the weighted gap and slip.
+            const unsigned int node = lumped ? j : k;
             a.area += d;
             a.G -= d * slave.nodes[node].current;
             a.H += d * (slave.nodes[node].current - pair.slave_committed[node]);
@@ -179,7 +180,7 @@ namespace DuctileContact
           }
       }
     pair.folded_M.clear();
-    if (pair.semi_smooth && pair.slave.has_hanging_nodes())
+    if (pair.condenses() && pair.slave.has_hanging_nodes())
       fold_hanging_nodes(pair);
     // Kept until the next step: a missed pair widens its search.
     if (pair.missed.empty())
@@ -217,7 +218,7 @@ namespace DuctileContact
 
 
   bool
-  ContactProblem::Pair::carries_contact(const unsigned int j) const
+  ContactPair::carries_contact(const unsigned int j) const
   {
     // A node that only touches the overlap at its rim (or not at all)
     // carries no contact.
@@ -226,20 +227,6 @@ namespace DuctileContact
       return aggregates[j].area > 1e-10 * face_size * face_size;
     else
       return aggregates[j].area > 1e-10 * face_size;
-  }
-
-
-
-  void
-  ContactProblem::apply_law(Pair &pair)
-  {
-    for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
-      if (pair.carries_contact(j))
-        pair.nodal[j] = nodal_contact(pair.aggregates[j],
-                                      pair.multiplier[j],
-                                      pair.committed_traction[j],
-                                      pair.law);
-    summarise(pair);
   }
 
 

@@ -29,6 +29,17 @@ namespace DuctileContact
 
 
 
+  const Enforcement *
+  ContactProblem::enforcement_of(const ContactEnforcement kind)
+  {
+    std::unique_ptr<Enforcement> &e = enforcements[kind];
+    if (!e)
+      e = make_enforcement(kind, *this);
+    return e.get();
+  }
+
+
+
   void
   ContactProblem::setup()
   {
@@ -64,13 +75,12 @@ namespace DuctileContact
         };
         const double E =
           std::min(youngs_modulus(pair.slave), youngs_modulus(pair.master));
-        const double h = pair.slave.smallest_face_size();
-        pair.index     = p;
-        pair.dual      = prm.multiplier_basis == MultiplierBasis::dual;
-        pair.semi_smooth =
-          prm.enforcement == ContactEnforcement::semi_smooth_newton;
-        pair.law.penalty            = prm.penalty_factor * E / h;
-        pair.law.friction           = prm.friction_coefficient;
+        const double h    = pair.slave.smallest_face_size();
+        pair.index        = p;
+        pair.dual         = prm.multiplier_basis == MultiplierBasis::dual;
+        pair.enforcement  = enforcement_of(prm.enforcement);
+        pair.law.penalty  = prm.penalty_factor * E / h;
+        pair.law.friction = prm.friction_coefficient;
         pair.law.tangential_penalty = prm.tangential_penalty_factor * E / h;
         // Active also when just touching (a gap at round-off level): then
         // the tangent holds the contact stiffness of a closed interface, so
@@ -95,8 +105,7 @@ namespace DuctileContact
       }
     surface.compress();
     for (const Pair &pair : data)
-      if (pair.semi_smooth)
-        check_condensable(pair);
+      pair.enforcement->check(pair);
     bulk_rows_here = slave_rows_complete_here();
   }
 
@@ -108,7 +117,7 @@ namespace DuctileContact
     // The DoFs of the slave nodes this rank condenses.
     std::unordered_set<types::global_dof_index> rows;
     for (const Pair &pair : data)
-      if (pair.semi_smooth)
+      if (pair.condenses())
         for (const auto &node : pair.slave.nodes)
           if (discretisation.locally_owned_dofs.is_element(node.dofs[0]))
             rows.insert(node.dofs.begin(), node.dofs.end());
@@ -120,40 +129,6 @@ namespace DuctileContact
     return Utilities::MPI::min(here ? 1 : 0,
                                discretisation.dof_handler.get_communicator()) ==
            1;
-  }
-
-
-
-  void
-  ContactProblem::check_condensable(const Pair &pair) const
-  {
-    // The condensation replaces the rows of the slave nodes: those that
-    // have rows (no hanging node) take over the hanging ones, which must
-    // hang on slave nodes; and they must be rows of this pair only.
-    const std::string entry  = pairs[pair.index].subsection() + "/Enforcement";
-    bool              orphan = false;
-    for (const auto &node : pair.slave.nodes)
-      for (const auto &parent : node.parents)
-        orphan = orphan || parent.first == numbers::invalid_unsigned_int;
-    check_input(!orphan,
-                entry,
-                "semi-smooth Newton",
-                "augmented Lagrangian where a hanging node of the slave "
-                "surface is constrained to nodes off it (a refined cell next "
-                "to a coarse one whose face is not in the slave surface)");
-    std::set<types::global_dof_index> others;
-    for (const Pair &other : data)
-      if (&other != &pair)
-        for (const ContactSurface *side : {&other.slave, &other.master})
-          for (const auto &node : side->nodes)
-            others.insert(node.dofs[0]);
-    for (const auto &node : pair.slave.nodes)
-      check_input(others.count(node.dofs[0]) == 0,
-                  entry,
-                  "semi-smooth Newton",
-                  "augmented Lagrangian where the slave surface shares nodes "
-                  "with another contact pair (the condensation replaces the "
-                  "slave rows of one pair)");
   }
 
 
@@ -204,36 +179,37 @@ namespace DuctileContact
   {
     AffineConstraints<double> all_constraints;
     extend_constraints(constraints, all_constraints);
-    bool semi_smooth = false, penalty = false;
+    bool condensing = false, other = false;
     for (Pair &pair : data)
       {
         pair.slave.update(u, discretisation);
         pair.master.update(u, discretisation);
-        integrate(pair, targets.tangent != nullptr && pair.semi_smooth);
-        semi_smooth = semi_smooth || pair.semi_smooth;
-        if (!pair.semi_smooth)
+        integrate(pair,
+                  targets.tangent != nullptr &&
+                    pair.enforcement->linearises_in_integration());
+        condensing = condensing || pair.condenses();
+        if (!pair.condenses())
           {
-            penalty = true;
-            apply_law(pair);
-            assemble_penalty(pair, all_constraints, targets);
+            other = true;
+            pair.enforcement->assemble(pair, all_constraints, targets);
           }
       }
-    // Without semi-smooth Newton the one compress of the assembly (the
-    // bulk assembly leaves its terms to it: needs_compressed_bulk()). Each
+    // Without a condensing pair the one compress of the assembly (the bulk
+    // assembly leaves its terms to it: needs_compressed_bulk()). Each
     // compress costs ~8 ms per tangent on prm/two_bodies.prm, with or
     // without new entries.
-    if (!semi_smooth)
+    if (!condensing)
       {
         compress(targets);
         return;
       }
-    if (penalty)
+    if (other)
       compress(targets);
     // The condensation reads the complete bulk rows of the slave nodes:
     // compressed, or complete where they are (slave_rows_complete_here()).
     for (Pair &pair : data)
-      if (pair.semi_smooth)
-        condense(pair, all_constraints, targets);
+      if (pair.condenses())
+        pair.enforcement->assemble(pair, all_constraints, targets);
     compress(targets);
   }
 
@@ -244,13 +220,7 @@ namespace DuctileContact
   {
     bool done = true;
     for (unsigned int p = 0; p < data.size(); ++p)
-      if (!data[p].semi_smooth &&
-          summaries[p].max_penetration > data[p].tolerance)
-        {
-          done = false;
-          for (unsigned int j = 0; j < data[p].nodal.size(); ++j)
-            data[p].multiplier[j] = data[p].nodal[j].pressure;
-        }
+      done = data[p].enforcement->outer_update(data[p], summaries[p]) && done;
     return done;
   }
 

@@ -294,9 +294,10 @@ namespace DuctileContact
               pair.committed_multiplier[j] * pair.aggregates[j].normal +
               pair.committed_traction[j];
             // As the assembly adds them: D_jk f_j on slave node k (D lumped
-            // to node j for semi-smooth Newton), -M_jl f_j on master node l.
+            // to node j by a condensing enforcement), -M_jl f_j on master
+            // node l.
             std::map<unsigned int, double> slave_weights;
-            if (pair.semi_smooth)
+            if (pair.condenses())
               slave_weights[j] = pair.aggregates[j].area;
             else
               slave_weights = pair.D[j];

@@ -266,6 +266,7 @@ namespace DuctileContact
           return needed[j];
         }))
       return;
+    const bool         lumped = pair.slave_weights() == SlaveWeights::lumped;
     FullMatrix<double> matrix(n_coordinates, n_coordinates);
     Vector<double>     rhs(n_coordinates), f_int(n_coordinates);
     std::vector<types::global_dof_index>    indices(n_coordinates);
@@ -293,10 +294,10 @@ namespace DuctileContact
             std::array<double, 10> &e = g[keys[a]];
             for (unsigned int k = 0; k < face_nodes; ++k)
               {
-                if (pair.semi_smooth && k != i)
+                if (lumped && k != i)
                   continue; // lumped: D_ii holds the row sum
                 const double       d    = operators.dD[i][k][a];
-                const unsigned int node = pair.semi_smooth ? j : s_nodes[k];
+                const unsigned int node = lumped ? j : s_nodes[k];
                 e[0] += d;
                 for (unsigned int r = 0; r < dim; ++r)
                   {
@@ -342,11 +343,12 @@ namespace DuctileContact
   {
     const ContactSurface &slave = pair.slave;
     const unsigned int    ns    = slave.nodes.size();
-    // D and M fixed (D lumped to node j for semi-smooth Newton) ...
+    // D and M fixed (D lumped to node j by a condensing enforcement) ...
+    const bool lumped = pair.slave_weights() == SlaveWeights::lumped;
     for (const auto &[k, d] : pair.D[j])
       for (unsigned int r = 0; r < dim; ++r)
         {
-          auto &e = g[3 * (pair.semi_smooth ? j : k) + r];
+          auto &e = g[3 * (lumped ? j : k) + r];
           e[1 + r] -= d;
           e[4 + r] += d;
         }
@@ -381,94 +383,6 @@ namespace DuctileContact
                   e[7 + c] += dn_j[c][m];
               }
           }
-      }
-  }
-
-  void
-  ContactProblem::assemble_penalty(Pair                            &pair,
-                                   const AffineConstraints<double> &constraints,
-                                   const AssemblyTargets           &targets)
-  {
-    FullMatrix<double>                   matrix;
-    Vector<double>                       rhs, f_int;
-    std::vector<types::global_dof_index> indices;
-    const ContactSurface                &slave = pair.slave;
-    const unsigned int                   ns    = slave.nodes.size();
-    std::vector<bool>                    needed(ns);
-    for (unsigned int j = 0; j < ns; ++j)
-      needed[j] =
-        pair.nodal[j].active &&
-        discretisation.locally_owned_dofs.is_element(slave.nodes[j].dofs[0]);
-    // d(aggregates)/dx: through D and M, then directly.
-    std::vector<std::map<unsigned int, std::array<double, 10>>> gradients(ns);
-    const bool tangent = targets.tangent != nullptr;
-    if (tangent)
-      {
-        std::vector<Tensor<1, dim>> forces(ns);
-        for (unsigned int j = 0; j < ns; ++j)
-          forces[j] = pair.nodal[j].force_density;
-        linearise_operators(pair,
-                            needed,
-                            forces,
-                            true,
-                            GradientShare::complete,
-                            constraints,
-                            targets,
-                            gradients);
-      }
-
-    for (unsigned int j = 0; j < ns; ++j)
-      {
-        if (!needed[j])
-          continue;
-        const NodalContactState &state = pair.nodal[j];
-        auto                    &g     = gradients[j];
-        if (tangent)
-          add_direct_gradients(pair, j, g);
-
-        // Local system: rows D_jk f_j (slave k), -M_jl f_j (master l);
-        // columns df_j/dx = (df_j/da) (da/dx).
-        std::vector<unsigned int> slave_rows;
-        for (const auto &[k, d] : pair.D[j])
-          slave_rows.push_back(k);
-        std::map<unsigned int, unsigned int> local;
-        indices = local_numbering(pair, j, slave_rows, g, local);
-        const unsigned int size = indices.size();
-        matrix.reinit(size, size);
-        rhs.reinit(size);
-        f_int.reinit(size);
-        // df_j/dx per column
-        std::vector<std::pair<unsigned int, Tensor<1, dim>>> df;
-        for (const auto &[key, e] : g)
-          {
-            Tensor<1, dim> v;
-            for (unsigned int r = 0; r < dim; ++r)
-              for (unsigned int a = 0; a < 10; ++a)
-                v[r] += state.jacobian[r][a] * e[a];
-            df.emplace_back(local[key], v);
-          }
-        const auto add_row = [&](const unsigned int key, const double weight) {
-          for (unsigned int r = 0; r < dim; ++r)
-            {
-              const unsigned int row = local[key + r];
-              f_int[row] += weight * state.force_density[r];
-              for (const auto &[column, v] : df)
-                matrix(row, column) += weight * v[r];
-            }
-        };
-        for (const auto &[k, d] : pair.D[j])
-          add_row(3 * k, d);
-        for (const auto &[l, m] : pair.M[j])
-          add_row(3 * (ns + l), -m);
-        for (unsigned int r = 0; r < size; ++r)
-          rhs[r] = -f_int[r];
-        scatter(matrix,
-                rhs,
-                f_int,
-                indices,
-                constraints,
-                discretisation.hanging_node_constraints,
-                targets);
       }
   }
 } // namespace DuctileContact

@@ -231,16 +231,14 @@ namespace DuctileContact
         (same_matrix ? mumps->has_factors()
                      : mumps->has_factors_for(A.trilinos_matrix())))
       {
-        const bool fresh =
-          reuse_iterations_left == settings.reuse_iterations;
+        const bool fresh = reuse_iterations_left == settings.reuse_iterations;
         const unsigned int solves_before = mumps->statistics().solves;
         const unsigned int n             = solve_with_old_factors(
           A, x, b, weights, enough, reuse_iterations_left, true);
         if (n == 0)
           {
             ++failed_reuses;
-            failed_reuse_solves +=
-              mumps->statistics().solves - solves_before;
+            failed_reuse_solves += mumps->statistics().solves - solves_before;
           }
         if (n > 0)
           {
@@ -274,8 +272,7 @@ namespace DuctileContact
                              b,
                              weights,
                              enough,
-                             std::max(settings.reuse_iterations,
-                                      gmres_restart),
+                             std::max(settings.reuse_iterations, gmres_restart),
                              false);
     if (n > 0)
       {
@@ -284,10 +281,9 @@ namespace DuctileContact
       }
     // Too ill-conditioned for them: double-precision factors, exact.
     if (!fallback)
-      fallback = std::make_unique<MumpsSolver>(
-        comm,
-        settings.factorisation,
-        settings.ordering);
+      fallback = std::make_unique<MumpsSolver>(comm,
+                                               settings.factorisation,
+                                               settings.ordering);
     fallback->factorize(A.trilinos_matrix());
     fallback->solve(x.trilinos_vector(), b.trilinos_vector());
     reuse_iterations_left = 0;

@@ -85,9 +85,9 @@ namespace DuctileContact
                    parameters.aggregation_threshold,
                    context.rigid_body_modes.get());
 
-    SolverControl control(parameters.max_iterations,
-                          accuracy.plain_tolerance(
-                            bu.l2_norm(), parameters.relative_tolerance));
+    SolverControl control(
+      parameters.max_iterations,
+      accuracy.plain_tolerance(bu.l2_norm(), parameters.relative_tolerance));
     if (parameters.type == LinearSolverType::cg_amg)
       {
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);

@@ -76,7 +76,7 @@ namespace DuctileContact
       for (unsigned int J = 0; J < n_blocks; ++J)
         {
           const Epetra_CrsMatrix &A = K.block(I, J).trilinos_matrix();
-          const int *p              = position[n_blocks * I + J].data();
+          const int              *p = position[n_blocks * I + J].data();
           for (int r = 0; r < A.NumMyRows(); ++r)
             {
               int     n, fn;
@@ -102,8 +102,7 @@ namespace DuctileContact
     for (unsigned int I = 0; I < Block::n_blocks; ++I)
       {
         const Epetra_MultiVector &bI = block_b.block(I).trilinos_vector();
-        AssertDimension(static_cast<std::size_t>(bI.MyLength()),
-                        row[I].size());
+        AssertDimension(static_cast<std::size_t>(bI.MyLength()), row[I].size());
         for (int r = 0; r < bI.MyLength(); ++r)
           flat_b[row[I][r]] = bI[0][r];
       }
@@ -125,14 +124,14 @@ namespace DuctileContact
 
 
   void
-  MonolithicCopy::get_solution(TrilinosWrappers::MPI::BlockVector &block_x) const
+  MonolithicCopy::get_solution(
+    TrilinosWrappers::MPI::BlockVector &block_x) const
   {
     const double *flat_x = x.trilinos_vector()[0];
     for (unsigned int I = 0; I < Block::n_blocks; ++I)
       {
         Epetra_MultiVector &xI = block_x.block(I).trilinos_vector();
-        AssertDimension(static_cast<std::size_t>(xI.MyLength()),
-                        row[I].size());
+        AssertDimension(static_cast<std::size_t>(xI.MyLength()), row[I].size());
         for (int r = 0; r < xI.MyLength(); ++r)
           xI[0][r] = flat_x[row[I][r]];
       }
@@ -141,8 +140,7 @@ namespace DuctileContact
 
 
   void
-  MonolithicCopy::make_pattern(
-    const TrilinosWrappers::BlockSparseMatrix &K)
+  MonolithicCopy::make_pattern(const TrilinosWrappers::BlockSparseMatrix &K)
   {
     const MPI_Comm     comm     = discretisation.dof_handler.get_communicator();
     const IndexSet    &owned    = discretisation.locally_owned_dofs;
@@ -195,7 +193,8 @@ namespace DuctileContact
           AssertThrow(flat_row >= 0,
                       ExcMessage("A row of the tangent is not locally owned."));
           for (unsigned int J = 0; J < n_blocks; ++J)
-            row_length[flat_row] += K.block(I, J).trilinos_matrix().NumMyEntries(r);
+            row_length[flat_row] +=
+              K.block(I, J).trilinos_matrix().NumMyEntries(r);
         }
 
     Epetra_CrsGraph       graph(Copy, map, row_length.data(), true);
@@ -267,7 +266,7 @@ namespace DuctileContact
     for (unsigned int I = 0; I < n_blocks; ++I)
       for (unsigned int J = 0; J < n_blocks; ++J)
         {
-          const Epetra_CrsMatrix &A          = K.block(I, J).trilinos_matrix();
+          const Epetra_CrsMatrix &A        = K.block(I, J).trilinos_matrix();
           source[n_blocks * I + J]         = &A;
           source_entries[n_blocks * I + J] = A.NumMyNonzeros();
         }

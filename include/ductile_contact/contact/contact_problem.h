@@ -8,8 +8,10 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <ductile_contact/assembly/assembly_data.h>
+#include <ductile_contact/contact/contact_pair.h>
 #include <ductile_contact/contact/contact_parameters.h>
 #include <ductile_contact/contact/contact_surface.h>
+#include <ductile_contact/contact/enforcement.h>
 #include <ductile_contact/contact/mortar_operators.h>
 #include <ductile_contact/contact/nodal_complementarity.h>
 #include <ductile_contact/contact/nodal_contact.h>
@@ -21,37 +23,13 @@
 #include <deque>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace DuctileContact
 {
-  /// State of one contact pair after an assembly (same on every rank).
-  struct ContactPairSummary
-  {
-    /// Force the slave body exerts on the master, sum of lambda_j A_j n_j
-    /// with n_j the slave's outward normal [N] (its negative acts on the
-    /// slave).
-    dealii::Tensor<1, dim> force;
-    /// Sum of A_j over the active slave nodes [m^2].
-    double       area         = 0.;
-    unsigned int active_nodes = 0;
-    /// Largest nodal penetration max(0, -g_j / A_j) over the slave nodes
-    /// [m].
-    double max_penetration = 0.;
-    /// Largest and smallest nodal pressure lambda_j over the active nodes
-    /// [Pa].
-    double max_pressure = 0., min_pressure = 0.;
-    /// Friction force the slave exerts on the master, sum of A_j t_T,j [N].
-    dealii::Tensor<1, dim> friction_force;
-    unsigned int           sticking_nodes = 0, slipping_nodes = 0;
-    /// Largest slip |s_j| of a node in contact in this step [m].
-    double max_slip = 0.;
-    /// Frictional dissipation (47) up to this state [J].
-    double dissipation = 0.;
-  };
-
   /**
    * Mortar contact with Coulomb friction between deformable bodies
    * (doc/model.md section 5, doc/contact.md), one or more pairs of boundary
@@ -67,29 +45,12 @@ namespace DuctileContact
    * over the overlap of each slave face with its candidate master faces,
    * n_j the averaged nodal normal (g_j >= 0 open).
    *
-   * Enforcement (KKT (44)) and friction (48) per slave node, chosen per
-   * pair (ContactEnforcement).
-   *
-   * Semi-smooth Newton (condense()): with the dual basis the slave row of
-   * node j reads R_j + A_j f_j = 0 (D lumped to its row sum A_j, which is
-   * D_jj wherever the slave faces around j are covered by master faces),
-   * so the multiplier is condensed as f_j(u) = -R_j(u) / A_j from the bulk
-   * residual; the slave rows become the complementarity function -C_j(a_j,
-   * f_j) (nodal_complementarity.h) and the master rows R_l - sum_j M_jl
-   * f_j. The linearised system is the bulk one with the slave rows
-   * combined into C_f / A_j K_j and added, as M_jl / A_j K_j, to the
-   * master rows (Popp, Gee & Wall 2009), plus the terms of dD, dM, dn.
-   * The active set and stick/slip follow from the iterate, with no state
-   * and no Uzawa loop; a DoF of a slave node fixed by a Dirichlet
-   * condition carries no traction (f_j,c = 0).
-   *
-   * Augmented Lagrangian (nodal_contact()): lambda_j = max(0, lambdahat_j
-   * - eps_N g_j / A_j), Coulomb friction with a tangential penalty and the
-   * return map on the slip since the last accepted step; the node
-   * transmits the traction f_j = lambda_j n_j + t_j, i.e. the contact force
-   * D_jk f_j on slave node k and -M_jl f_j on master node l. Newton
-   * iterates with lambdahat fixed, augment() then sets lambdahat <- lambda
-   * until max_j (-g_j / A_j) is below the tolerance.
+   * Enforcement (KKT (44)) and friction (48) per slave node: the pair's
+   * Enforcement (`Contact pair/Enforcement`), SemiSmoothNewton (the
+   * tractions condensed from the bulk rows, no outer loop) or
+   * AugmentedLagrangian (the nodal law on fixed multipliers, Uzawa updates
+   * by outer_update()). This class gives them the geometry, the operators
+   * and the derivatives; they make the tractions and the rows.
    *
    * Consistent linearisation: d(D_jk f_j) = dD_jk f_j + D_jk (df_j/da)
    * (da/dx), with a = (A_j, G_j, H_j, n_j) the nodal aggregates
@@ -117,8 +78,14 @@ namespace DuctileContact
    * those of an equal share of the pairs it needs otherwise. The augmented
    * Lagrangian sends the derivatives to the nodes' owners; the condensation of
    * semi-smooth Newton, whose tangent terms are linear in them, adds each
-   * rank's partial derivatives where they were made (condense()). Results are
+   * rank's partial derivatives where they were made. Results are
    * the same on any number of ranks up to round-off.
+   *
+   * Files: contact_problem.cc (setup, the step, the module lifecycle),
+   * contact_search.cc, contact_couplings.cc, contact_integration.cc (D, M,
+   * aggregates), contact_tangent.cc (their derivatives), contact_state.cc
+   * (committed state, checkpoint, transfer), the enforcements in
+   * semi_smooth_newton.cc and augmented_lagrangian.cc.
    *
    * The driver sees it as a PhysicsModule.
    */
@@ -284,79 +251,20 @@ namespace DuctileContact
     const std::deque<ContactPairParameters> &pairs;
 
   private:
+    friend class SemiSmoothNewton;
+    friend class AugmentedLagrangian;
+
     /// Multiplier updates (augment()) since the last begin_step().
     unsigned int outer_updates = 0;
 
-    struct Pair
-    {
-      unsigned int   index = 0; ///< position in pairs and summaries
-      ContactSurface slave, master;
-      bool           dual = true;  ///< dual or standard multiplier basis
-      bool semi_smooth    = false; ///< ContactEnforcement::semi_smooth_newton
-      NodalContactParameters law;
-      double                 search_radius = 0., tolerance = 0.; ///< [m]
-      double                 face_size = 0.; ///< smallest slave face size [m]
-      /// Contact pair/Search radius (0: from the step's motion, see
-      /// search_radius()) [m].
-      double given_radius = 0.;
-      /// Doubles in every step in which a face pair came within reach
-      /// outside the candidates.
-      double widen = 1.;
-      /// Of the last assembly: a face pair within reach that is no
-      /// candidate ("" when there is none).
-      std::string missed;
-      /// Node positions of the last accepted step (slip increments).
-      std::vector<dealii::Point<dim>> slave_committed, master_committed;
-      /// Tangential traction per slave node of the last accepted step [Pa].
-      std::vector<dealii::Tensor<1, dim>> committed_traction;
-      double step_dissipation = 0., dissipation = 0.; ///< [J]
-      /// Candidate master faces of each slave face.
-      std::vector<std::vector<unsigned int>> candidates;
-      /// Multipliers lambdahat per slave node: iterate and committed [Pa].
-      std::vector<double> multiplier, committed_multiplier;
-      // Of the last assembly:
-      /// Current slave faces.
-      std::vector<ContactFace> slave_faces;
-      /// (slave face, master face) pairs that overlap.
-      std::vector<std::pair<unsigned int, unsigned int>> overlaps;
-      /// Whether integrate() kept derivatives: then this rank's share of
-      /// the face pairs, overlaps[linearised_pairs[k]], has its dD and dM
-      /// in linearised_operators[k] (the vector only grows, and is reused).
-      bool                           linearised_here = false;
-      std::vector<std::size_t>       linearised_pairs;
-      std::vector<FacePairOperators> linearised_operators;
-      /// Per slave node: D_jk, M_jl, the aggregates (nodal_contact.h), the
-      /// length of the summed face normals n_j is made from, the state.
-      std::vector<std::map<unsigned int, double>> D, M;
-      /// Semi-smooth Newton with hanging slave nodes: M with the row of
-      /// each hanging node added, times its weight, to its parents' rows
-      /// (fold_hanging_nodes()); empty otherwise.
-      std::vector<std::map<unsigned int, double>> folded_M;
-      std::vector<NodalAggregates>                aggregates;
-      std::vector<double>                         normal_length;
-      std::vector<NodalContactState>              nodal;
+    using Pair = ContactPair;
 
-      /// Whether slave node @p j has a share of the overlap (only those
-      /// carry contact).
-      bool
-      carries_contact(const unsigned int j) const;
+    /// One Enforcement per kind in use, which the pairs point to.
+    std::map<ContactEnforcement, std::unique_ptr<Enforcement>> enforcements;
 
-      /// The slave weights D needs: semi-smooth Newton lumps D to its
-      /// row's node (D[j] then holds only D_jj, the row sum).
-      SlaveWeights
-      slave_weights() const
-      {
-        return semi_smooth ? SlaveWeights::lumped : SlaveWeights::full;
-      }
-
-      /// The master weights of node @p j's traction: folded_M[j] if
-      /// there is one, else M[j].
-      const std::map<unsigned int, double> &
-      master_row(const unsigned int j) const
-      {
-        return folded_M.empty() ? M[j] : folded_M[j];
-      }
-    };
+    /// The Enforcement of @p kind, made on first use.
+    const Enforcement *
+    enforcement_of(ContactEnforcement kind);
 
     /// @p constraints (which know the locally relevant DoFs only) plus the
     /// constraints of every contact-surface DoF, gathered from the ranks
@@ -383,12 +291,6 @@ namespace DuctileContact
     /// slave nodes it condenses (no ghost cell touches them). Collective.
     bool
     slave_rows_complete_here() const;
-
-    /// Throws InputError (on every rank) when a slave node of a
-    /// semi-smooth Newton pair hangs on a node off the slave surface or
-    /// belongs to another pair too.
-    void
-    check_condensable(const Pair &pair) const;
 
     /// The master faces of @p pair whose current bounding boxes meet each
     /// slave face's enlarged by @p radius, sorted, by slave face: the
@@ -475,91 +377,9 @@ namespace DuctileContact
     void
     fold_hanging_nodes(Pair &pair) const;
 
-    /// The nodal contact law (augmented Lagrangian) of every node of
-    /// @p pair and its summary.
-    void
-    apply_law(Pair &pair);
-
     /// summaries[pair.index] from pair.nodal and the aggregates.
     void
     summarise(Pair &pair);
-
-    /// Contact terms of an augmented-Lagrangian pair into @p targets
-    /// (not compressed).
-    void
-    assemble_penalty(Pair                                    &pair,
-                     const dealii::AffineConstraints<double> &constraints,
-                     const AssemblyTargets                   &targets);
-
-    /// Semi-smooth Newton pair: condenses the multipliers from the
-    /// compressed bulk system in @p targets (class documentation) and adds
-    /// the rows (not compressed).
-    void
-    condense(Pair                                    &pair,
-             const dealii::AffineConstraints<double> &constraints,
-             const AssemblyTargets                   &targets);
-
-    using Matrix3 = std::array<std::array<double, dim>, dim>;
-
-    /// What condense() knows of the slave nodes: which this rank
-    /// condenses, which of their DoFs are free, their complementarity.
-    struct CondensedNodes
-    {
-      std::vector<bool>                  owned;
-      std::vector<std::array<bool, dim>> free;
-      std::vector<NodalComplementarity>  law;
-
-      /// S = (dC/df) P / A_j, the weights of the bulk rows of node @p j in
-      /// its new rows (identity in a row fixed by a Dirichlet condition).
-      Matrix3
-      row_weights(const unsigned int j, const double area) const;
-    };
-
-    /// The tractions f_j = -R_j / A_j (from the compressed residual of
-    /// @p targets), the complementarity and free DoFs of every node that
-    /// carries contact, the summary.
-    void
-    condensed_states(Pair                                    &pair,
-                     const dealii::AffineConstraints<double> &constraints,
-                     const AssemblyTargets                   &targets,
-                     CondensedNodes                          &nodes);
-
-    /// Residual, right-hand side and internal force of the slave rows of
-    /// node @p j and of the master rows it couples to.
-    void
-    add_condensed_vectors(const Pair                              &pair,
-                          const unsigned int                       j,
-                          const CondensedNodes                    &nodes,
-                          const dealii::AffineConstraints<double> &constraints,
-                          const AssemblyTargets &targets) const;
-
-    /// Weighted sums of tangent rows per target row (contact_condensation.cc).
-    class RowSums;
-
-    /// The bulk tangent rows of node @p j: S K_j in its own rows, M_jl /
-    /// A_j K_j into @p master_rows (added to the master rows once all slave
-    /// nodes are done: a master row takes the rows of many of them).
-    void
-    combine_rows(const Pair                                  &pair,
-                 const unsigned int                           j,
-                 const CondensedNodes                        &nodes,
-                 const dealii::AffineConstraints<double>     &constraints,
-                 dealii::TrilinosWrappers::BlockSparseMatrix &tangent,
-                 RowSums &master_rows) const;
-
-    /// The tangent terms of node @p j through its aggregates (@p g holds
-    /// their derivatives through dD and dM, all of them or this rank's
-    /// share: the terms are linear in them); with @p direct also those
-    /// through the positions and the normal (add_direct_gradients(): once,
-    /// on the rank that owns j).
-    void
-    add_aggregate_terms(const Pair                                     &pair,
-                        const unsigned int                              j,
-                        const CondensedNodes                           &nodes,
-                        std::map<unsigned int, std::array<double, 10>> &g,
-                        const bool                                      direct,
-                        const dealii::AffineConstraints<double> &constraints,
-                        const AssemblyTargets                   &targets) const;
 
     /// Where linearise_operators() leaves the derivatives of D and M.
     enum class GradientShare
@@ -569,22 +389,6 @@ namespace DuctileContact
       /// Each rank's share where it was made.
       partial
     };
-
-    /// Adds @p weight times the rows @p rows of the tangent (read before
-    /// any change) to the row of @p dof, through @p constraints (a
-    /// Dirichlet row takes nothing, a hanging row goes to its parents).
-    struct MatrixRow
-    {
-      /// Per block column b: block-local columns and values.
-      std::vector<std::vector<dealii::types::global_dof_index>> columns;
-      std::vector<std::vector<double>>                          values;
-    };
-    static void
-    add_row(const MatrixRow                             &row,
-            const double                                 weight,
-            const dealii::types::global_dof_index        dof,
-            const dealii::AffineConstraints<double>     &constraints,
-            dealii::TrilinosWrappers::BlockSparseMatrix &tangent);
 
     /// d(aggregates of node j)/dx, for the nodes j in @p needed, from the
     /// derivatives of D and M (overlapping face pairs with a node in @p
@@ -652,21 +456,6 @@ namespace DuctileContact
                          const unsigned int                              j,
                          std::map<unsigned int, std::array<double, 10>> &g,
                          const bool normal = true);
-
-    /// Semi-smooth Newton: adds the aggregate derivatives of every hanging
-    /// slave node (this rank's share of them), times its weight, to its
-    /// parents' (fold_hanging_nodes()), and those through its positions to
-    /// the parents in @p owned.
-    static void
-    fold_hanging_gradients(
-      const Pair                                                  &pair,
-      const std::vector<bool>                                     &owned,
-      std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients);
-
-    /// Columns of the bulk rows of the owned slave nodes of @p pair (DoFs
-    /// of the cells around them), per slave node.
-    std::vector<std::vector<dealii::types::global_dof_index>>
-    slave_row_columns(const Pair &pair) const;
 
     /// The local numbering of the contact system of slave node @p j: the
     /// coordinate keys of the slave nodes @p slave_rows, of the master nodes

@@ -82,9 +82,9 @@ namespace DuctileContact
     solve(const dealii::TrilinosWrappers::SparseMatrix &A,
           dealii::TrilinosWrappers::MPI::Vector        &x,
           const dealii::TrilinosWrappers::MPI::Vector  &b,
-          const dealii::TrilinosWrappers::MPI::Vector  *weights = nullptr,
-          double                                        enough  = 0.,
-          bool same_matrix                                      = false);
+          const dealii::TrilinosWrappers::MPI::Vector  *weights     = nullptr,
+          double                                        enough      = 0.,
+          bool                                          same_matrix = false);
 
     /// Factorises @p A (exact factors unless the settings ask for single
     /// precision) for apply().
@@ -158,7 +158,7 @@ namespace DuctileContact
     /// cannot precondition.
     std::unique_ptr<MumpsSolver> fallback;
     /// The Amesos solver of the last factorize() (Amesos packages).
-    std::unique_ptr<dealii::SolverControl>          amesos_control;
+    std::unique_ptr<dealii::SolverControl>                  amesos_control;
     std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> amesos;
 
     /// GMRES iterations the current factors may still serve.

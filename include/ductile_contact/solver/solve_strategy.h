@@ -75,7 +75,8 @@ namespace DuctileContact
     /// The DoFs changed: forget what depends on them.
     virtual void
     reset()
-    {}
+    {
+    }
   };
 
   /// The displacement block alone (alpha and s empty) by the direct solver.

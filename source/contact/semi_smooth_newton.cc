@@ -1,28 +1,74 @@
-// The semi-smooth Newton enforcement of ContactProblem: condensation of
-// the dual multipliers from the slave rows (contact_problem.h).
+// SemiSmoothNewton: the enforcement that condenses the dual multipliers
+// from the slave rows (semi_smooth_newton.h).
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <ductile_contact/assembly/scatter.h>
 #include <ductile_contact/contact/contact_problem.h>
+#include <ductile_contact/contact/semi_smooth_newton.h>
+#include <ductile_contact/core/input_error.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
 #include <deque>
 #include <map>
+#include <set>
 #include <unordered_map>
 
 namespace DuctileContact
 {
   using namespace dealii;
 
+  SemiSmoothNewton::SemiSmoothNewton(ContactProblem &problem)
+      : problem(problem)
+      , discretisation(problem.discretisation)
+  {
+  }
+
+
+
   void
-  ContactProblem::add_row(const MatrixRow                     &row,
-                          const double                         weight,
-                          const types::global_dof_index        dof,
-                          const AffineConstraints<double>     &constraints,
-                          TrilinosWrappers::BlockSparseMatrix &tangent)
+  SemiSmoothNewton::check(const ContactPair &pair) const
+  {
+    // The condensation replaces the rows of the slave nodes: those that
+    // have rows (no hanging node) take over the hanging ones, which must
+    // hang on slave nodes; and they must be rows of this pair only.
+    const std::string entry =
+      problem.pairs[pair.index].subsection() + "/Enforcement";
+    bool orphan = false;
+    for (const auto &node : pair.slave.nodes)
+      for (const auto &parent : node.parents)
+        orphan = orphan || parent.first == numbers::invalid_unsigned_int;
+    check_input(!orphan,
+                entry,
+                "semi-smooth Newton",
+                "augmented Lagrangian where a hanging node of the slave "
+                "surface is constrained to nodes off it (a refined cell next "
+                "to a coarse one whose face is not in the slave surface)");
+    std::set<types::global_dof_index> others;
+    for (const ContactPair &other : problem.data)
+      if (&other != &pair)
+        for (const ContactSurface *side : {&other.slave, &other.master})
+          for (const auto &node : side->nodes)
+            others.insert(node.dofs[0]);
+    for (const auto &node : pair.slave.nodes)
+      check_input(others.count(node.dofs[0]) == 0,
+                  entry,
+                  "semi-smooth Newton",
+                  "augmented Lagrangian where the slave surface shares nodes "
+                  "with another contact pair (the condensation replaces the "
+                  "slave rows of one pair)");
+  }
+
+
+
+  void
+  SemiSmoothNewton::add_row(const MatrixRow                     &row,
+                            const double                         weight,
+                            const types::global_dof_index        dof,
+                            const AffineConstraints<double>     &constraints,
+                            TrilinosWrappers::BlockSparseMatrix &tangent)
   {
     const auto add = [&](const types::global_dof_index target, const double w) {
       for (unsigned int b = 0; b < row.columns.size(); ++b)
@@ -56,7 +102,7 @@ namespace DuctileContact
    * (tens on prm/two_bodies.prm, each row ~375 entries), and one addition of
    * their union costs a fraction of the matrix's per-entry searches.
    */
-  class ContactProblem::RowSums
+  class SemiSmoothNewton::RowSums
   {
   public:
     /// Keeps @p row (a copy) and returns its key.
@@ -144,7 +190,7 @@ namespace DuctileContact
 
 
   std::vector<std::vector<types::global_dof_index>>
-  ContactProblem::slave_row_columns(const Pair &pair) const
+  SemiSmoothNewton::master_row_columns(const ContactPair &pair) const
   {
     std::unordered_map<types::global_dof_index, unsigned int> node_of;
     for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
@@ -154,7 +200,7 @@ namespace DuctileContact
     std::vector<std::vector<types::global_dof_index>> columns(
       pair.slave.nodes.size());
     // The cells that write into the row of node j.
-    for_each_cell_row(
+    problem.for_each_cell_row(
       [](const auto &cell) { return !cell->is_artificial(); },
       [&](const types::global_dof_index               row,
           const std::vector<types::global_dof_index> &cell_dofs) {
@@ -174,10 +220,11 @@ namespace DuctileContact
 
 
   void
-  ContactProblem::condensed_states(Pair                            &pair,
-                                   const AffineConstraints<double> &constraints,
-                                   const AssemblyTargets           &targets,
-                                   CondensedNodes                  &nodes)
+  SemiSmoothNewton::condensed_states(
+    ContactPair                     &pair,
+    const AffineConstraints<double> &constraints,
+    const AssemblyTargets           &targets,
+    CondensedNodes                  &nodes) const
   {
     const ContactSurface &slave = pair.slave;
     const unsigned int    ns    = slave.nodes.size();
@@ -199,7 +246,7 @@ namespace DuctileContact
         // @p constraints know every contact-surface DoF (extend_constraints()).
         for (unsigned int c = 0; c < dim; ++c)
           {
-            // No hanging node here: check_condensable() refused them.
+            // No hanging node here: check() refused them.
             Assert(constraints.get_constraint_entries(dofs[c]) == nullptr ||
                      constraints.get_constraint_entries(dofs[c])->empty(),
                    ExcInternalError());
@@ -229,14 +276,14 @@ namespace DuctileContact
         state.dissipation        = law.dissipation;
         state.force_density      = fj;
       }
-    summarise(pair);
+    problem.summarise(pair);
   }
 
 
 
-  ContactProblem::Matrix3
-  ContactProblem::CondensedNodes::row_weights(const unsigned int j,
-                                              const double       area) const
+  SemiSmoothNewton::Matrix3
+  SemiSmoothNewton::CondensedNodes::row_weights(const unsigned int j,
+                                                const double       area) const
   {
     // S = dC/df P / A; a row fixed by a Dirichlet condition stays as it is.
     Matrix3 S;
@@ -251,8 +298,8 @@ namespace DuctileContact
 
 
   void
-  ContactProblem::add_condensed_vectors(
-    const Pair                      &pair,
+  SemiSmoothNewton::add_condensed_vectors(
+    const ContactPair               &pair,
     const unsigned int               j,
     const CondensedNodes            &nodes,
     const AffineConstraints<double> &constraints,
@@ -318,12 +365,12 @@ namespace DuctileContact
 
 
   void
-  ContactProblem::combine_rows(const Pair                          &pair,
-                               const unsigned int                   j,
-                               const CondensedNodes                &nodes,
-                               const AffineConstraints<double>     &constraints,
-                               TrilinosWrappers::BlockSparseMatrix &tangent,
-                               RowSums &master_rows) const
+  SemiSmoothNewton::combine_rows(const ContactPair               &pair,
+                                 const unsigned int               j,
+                                 const CondensedNodes            &nodes,
+                                 const AffineConstraints<double> &constraints,
+                                 TrilinosWrappers::BlockSparseMatrix &tangent,
+                                 RowSums &master_rows) const
   {
     const double  A    = pair.aggregates[j].area;
     const auto   &dofs = pair.slave.nodes[j].dofs;
@@ -386,8 +433,8 @@ namespace DuctileContact
 
 
   void
-  ContactProblem::add_aggregate_terms(
-    const Pair                                     &pair,
+  SemiSmoothNewton::add_aggregate_terms(
+    const ContactPair                              &pair,
     const unsigned int                              j,
     const CondensedNodes                           &nodes,
     std::map<unsigned int, std::array<double, 10>> &g,
@@ -402,7 +449,7 @@ namespace DuctileContact
     const auto           &J  = nodes.law[j].jacobian;
     const Tensor<1, dim> &f  = pair.nodal[j].force_density;
     if (direct)
-      add_direct_gradients(pair, j, g);
+      ContactProblem::add_direct_gradients(pair, j, g);
     std::array<std::array<double, 10>, dim> Js;
     for (unsigned int r = 0; r < dim; ++r)
       {
@@ -423,9 +470,9 @@ namespace DuctileContact
       for (unsigned int r = 0; r < dim; ++r)
         row_keys.push_back(3 * (ns + lm.first) + r);
     for (const unsigned int key : row_keys)
-      rows.push_back(coordinate_dof(pair, key));
+      rows.push_back(ContactProblem::coordinate_dof(pair, key));
     for (const auto &entry : g)
-      columns.push_back(coordinate_dof(pair, entry.first));
+      columns.push_back(ContactProblem::coordinate_dof(pair, entry.first));
     FullMatrix<double> block(rows.size(), columns.size());
     unsigned int       column = 0;
     for (const auto &[key, e] : g)
@@ -457,7 +504,7 @@ namespace DuctileContact
     // constraints (and their inhomogeneities to the right-hand side).
     std::map<unsigned int, unsigned int>       local;
     const std::vector<types::global_dof_index> indices =
-      local_numbering(pair, j, {j}, g, local);
+      ContactProblem::local_numbering(pair, j, {j}, g, local);
     FullMatrix<double> matrix(indices.size(), indices.size());
     Vector<double>     zero(indices.size());
     for (unsigned int r = 0; r < rows.size(); ++r)
@@ -481,9 +528,9 @@ namespace DuctileContact
 
 
   void
-  ContactProblem::condense(Pair                            &pair,
-                           const AffineConstraints<double> &constraints,
-                           const AssemblyTargets           &targets)
+  SemiSmoothNewton::assemble(ContactPair                     &pair,
+                             const AffineConstraints<double> &constraints,
+                             const AssemblyTargets           &targets) const
   {
     Assert(targets.residual != nullptr, ExcInternalError());
     CondensedNodes nodes;
@@ -513,14 +560,15 @@ namespace DuctileContact
     std::vector<bool> held;
     if (targets.tangent)
       {
-        held = linearise_operators(pair,
-                                   needed,
-                                   forces,
-                                   false,
-                                   GradientShare::partial,
-                                   constraints,
-                                   targets,
-                                   gradients);
+        held =
+          problem.linearise_operators(pair,
+                                      needed,
+                                      forces,
+                                      false,
+                                      ContactProblem::GradientShare::partial,
+                                      constraints,
+                                      targets,
+                                      gradients);
         fold_hanging_gradients(pair, nodes.owned, gradients);
       }
     // The bulk rows of node j are read (combine_rows()) before its
@@ -550,8 +598,8 @@ namespace DuctileContact
 
 
   void
-  ContactProblem::fold_hanging_gradients(
-    const Pair                                                  &pair,
+  SemiSmoothNewton::fold_hanging_gradients(
+    const ContactPair                                           &pair,
     const std::vector<bool>                                     &owned,
     std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients)
   {
@@ -567,7 +615,7 @@ namespace DuctileContact
         if (std::any_of(parents.begin(), parents.end(), [&](const auto &p) {
               return owned[p.first];
             }))
-          add_direct_gradients(pair, h, direct, false);
+          ContactProblem::add_direct_gradients(pair, h, direct, false);
         for (const auto &[p, w] : parents)
           for (const auto *g : {&gradients[h], &direct})
             if (g == &gradients[h] || owned[p])
