@@ -18,6 +18,11 @@
 //    extrapolation of s helps while s grows with the pull; while it relaxes
 //    at the hold (increments shrinking faster than by half per step), the
 //    last increment overshoots by more than keeping s misses.
+// A bound engaged at the start of every step: a homogeneous plastic box
+// (tests/plastic_box) with Plasticity/Loading condition = bound, whose
+// bound alpha_n <= alpha holds from the first iteration. 'best linear'
+// evaluates its first guesses before any tangent of the step, with the
+// bound's rows made afresh; it gives the curve of 'linear'.
 #include "tests.h"
 
 using namespace dealii;
@@ -85,6 +90,35 @@ end
     for (std::string name, value; in >> name >> value;)
       sum += std::stod(value) * std::stod(value);
     return std::sqrt(sum);
+  }
+
+  /// The plastic box of tests/plastic_box with the alpha bound.
+  std::string
+  plastic_box_prm(const std::string &predictor)
+  {
+    return Testing::unit_cube_prm(R"(  set Plasticity    = true
+  subsection Plasticity
+    set Initial yield stress    = 0.005
+    set Saturation yield stress = 0.006
+    set Saturation exponent     = 25
+    set Viscosity               = 1e-6
+    set Loading condition       = bound
+  end
+)") + Testing::uniaxial_pull_prm("0.02*t") +
+           R"(
+subsection Load stepping
+  set End time  = 1
+  set Time step = 0.1
+  set Predictor = )" +
+           predictor + R"(
+end
+subsection Newton
+  set Relative tolerance = 1e-11
+end
+subsection Output
+  set Interval = 0
+end
+)";
   }
 
   std::pair<Testing::Table, Starts>
@@ -184,4 +218,26 @@ main(int argc, char **argv)
       out << "each guess is chosen by a clear margin in some step: "
           << Testing::yes_no(first > 0 && second > 0) << std::endl;
     }
+
+  const auto plastic_linear =
+    Testing::run_scene(plastic_box_prm("linear"), "plastic_linear");
+  const auto plastic_best =
+    Testing::run_scene(plastic_box_prm("best linear"), "plastic_best");
+  bool   plastic_same  = plastic_linear.at("time") == plastic_best.at("time");
+  double plastic_worst = 0.;
+  const double end_reaction = plastic_linear.at("F1_x").back();
+  for (unsigned int n = 0; plastic_same && n < plastic_linear.at("time").size();
+       ++n)
+    plastic_worst = std::max(plastic_worst,
+                             std::abs(plastic_best.at("F1_x")[n] -
+                                      plastic_linear.at("F1_x")[n]) /
+                               std::abs(end_reaction));
+  out << "plastic box with the alpha bound: 'best linear' reaches the end "
+         "with the curve of 'linear' (same steps, force to 1e-6): "
+      << Testing::yes_no(plastic_same && plastic_worst < 1e-6 &&
+                         plastic_best.at("time").back() > 1. - 1e-12)
+      << std::endl;
+  out << "  end reaction " << std::setprecision(5) << end_reaction
+      << ", largest alpha " << plastic_linear.at("max_alpha").back()
+      << std::endl;
 }

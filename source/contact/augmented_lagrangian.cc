@@ -78,13 +78,13 @@ namespace DuctileContact
         for (unsigned int j = 0; j < ns; ++j)
           forces[j] = pair.nodal[j].force_density;
         problem.linearise_operators(pair,
-                            needed,
-                            forces,
-                            true,
-                            ContactProblem::GradientShare::complete,
-                            constraints,
-                            targets,
-                            gradients);
+                                    needed,
+                                    forces,
+                                    true,
+                                    ContactProblem::GradientShare::complete,
+                                    constraints,
+                                    targets,
+                                    gradients);
       }
 
     for (unsigned int j = 0; j < ns; ++j)
@@ -102,7 +102,8 @@ namespace DuctileContact
         for (const auto &[k, d] : pair.D[j])
           slave_rows.push_back(k);
         std::map<unsigned int, unsigned int> local;
-        indices = ContactProblem::local_numbering(pair, j, slave_rows, g, local);
+        indices =
+          ContactProblem::local_numbering(pair, j, slave_rows, g, local);
         const unsigned int size = indices.size();
         matrix.reinit(size, size);
         rhs.reinit(size);

@@ -7,7 +7,8 @@ namespace DuctileContact
 {
   void
   Enforcement::check(const ContactPair &) const
-  {}
+  {
+  }
 
 
 

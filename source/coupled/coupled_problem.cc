@@ -440,7 +440,11 @@ namespace DuctileContact
     targets.branch_record = &branches;
     targets.branches      = Branches::record;
     last_info             = assemble(targets);
-    if (matrix == nullptr)
+    // A chord step keeps the bounds' rows while their active sets stay.
+    // Otherwise (a tangent, or the first guesses of a step, whose bounds
+    // have no rows yet) the active sets and rows are made afresh, scaled
+    // by the diagonal of the tangent at hand.
+    if (matrix == nullptr && keeps_tangent())
       keep_bound_rows(x);
     else
       {
@@ -510,8 +514,8 @@ namespace DuctileContact
   ResidualEvaluation
   CoupledProblem::assemble_right_hand_side(const Vector &x)
   {
-    // The bounds' rows only if their active sets stay (keep_bound_rows()).
-    Assert(keeps_tangent(), ExcInternalError());
+    // A chord step (keeps_tangent()) or a first guess of the step
+    // (NewtonSolver::best_start, before any tangent of this solve).
     return assemble_recording(x, nullptr);
   }
 

@@ -56,9 +56,9 @@ namespace DuctileContact
   {
     unsigned int   index = 0; ///< position in pairs and summaries
     ContactSurface slave, master;
-    bool           dual = true;  ///< dual or standard multiplier basis
+    bool           dual = true; ///< dual or standard multiplier basis
     /// How the pair enforces contact (owned by its ContactProblem).
-    const Enforcement *enforcement = nullptr;
+    const Enforcement     *enforcement = nullptr;
     NodalContactParameters law;
     double                 search_radius = 0., tolerance = 0.; ///< [m]
     double                 face_size = 0.; ///< smallest slave face size [m]

@@ -4,8 +4,8 @@
 #include <deal.II/lac/affine_constraints.h>
 
 #include <ductile_contact/assembly/assembly_data.h>
-#include <ductile_contact/contact/contact_parameters.h>
 #include <ductile_contact/contact/contact_pair.h>
+#include <ductile_contact/contact/contact_parameters.h>
 #include <ductile_contact/contact/mortar_operators.h>
 
 #include <memory>

@@ -87,7 +87,7 @@ namespace DuctileContact
     /// @p targets), the complementarity and free DoFs of every node that
     /// carries contact, the summary.
     void
-    condensed_states(ContactPair                                    &pair,
+    condensed_states(ContactPair                             &pair,
                      const dealii::AffineConstraints<double> &constraints,
                      const AssemblyTargets                   &targets,
                      CondensedNodes                          &nodes) const;
@@ -96,7 +96,7 @@ namespace DuctileContact
     /// Residual, right-hand side and internal force of the slave rows of
     /// node @p j and of the master rows it couples to.
     void
-    add_condensed_vectors(const ContactPair                              &pair,
+    add_condensed_vectors(const ContactPair                       &pair,
                           const unsigned int                       j,
                           const CondensedNodes                    &nodes,
                           const dealii::AffineConstraints<double> &constraints,
@@ -111,7 +111,7 @@ namespace DuctileContact
     /// A_j K_j into @p master_rows (added to the master rows once all slave
     /// nodes are done: a master row takes the rows of many of them).
     void
-    combine_rows(const ContactPair                                  &pair,
+    combine_rows(const ContactPair                           &pair,
                  const unsigned int                           j,
                  const CondensedNodes                        &nodes,
                  const dealii::AffineConstraints<double>     &constraints,
@@ -125,7 +125,7 @@ namespace DuctileContact
     /// through the positions and the normal (add_direct_gradients(): once,
     /// on the rank that owns j).
     void
-    add_aggregate_terms(const ContactPair                                     &pair,
+    add_aggregate_terms(const ContactPair                              &pair,
                         const unsigned int                              j,
                         const CondensedNodes                           &nodes,
                         std::map<unsigned int, std::array<double, 10>> &g,
@@ -159,7 +159,7 @@ namespace DuctileContact
     /// the parents in @p owned.
     static void
     fold_hanging_gradients(
-      const ContactPair                                                  &pair,
+      const ContactPair                                           &pair,
       const std::vector<bool>                                     &owned,
       std::vector<std::map<unsigned int, std::array<double, 10>>> &gradients);
 

@@ -105,9 +105,11 @@ namespace DuctileContact
     {
       return false;
     }
-    /// For a chord step (only where keeps_tangent()): right-hand side and
-    /// residual at @p x with its branches recorded, as assemble_system()
-    /// makes them, the matrix left as the last assemble_system() made it.
+    /// Right-hand side and residual at @p x with its branches recorded, as
+    /// assemble_system() makes them, the matrix left as the last
+    /// assemble_system() made it: for a chord step (where keeps_tangent())
+    /// and for the first guesses of a step (NewtonSolver::best_start),
+    /// whose residuals it compares.
     virtual ResidualEvaluation
     assemble_right_hand_side(const Vector &x)
     {
