@@ -98,15 +98,20 @@ names = {"2a1bd1b": "defaults of 2a1bd1b (run 2026-12-02)",
          "00d78c6": "defaults of 00d78c6 (run 2026-12-05)",
          "5b2ec8e": "defaults of 5b2ec8e (run 2026-12-06; sent_coarse's "
                     "overlapped a build)",
+         "d229c41": "defaults of d229c41 (run 2026-12-07 12:02-12:21, each "
+                    "before the current code's run)",
          "default": "current defaults",
          "output": "current defaults with the scene's field output",
          "constant": "constant predictor (the default before the linear one)",
          "relative": "linear solves to the relative tolerance",
          "newton": "a tangent in every Newton iteration",
          "c78e5bc-single": "single-precision factors (the code of c78e5bc, run 2026-12-04)",
-         "al": "augmented Lagrangian (2026-12-02)",
+         "al": "augmented Lagrangian",
+         "d229c41-al": "augmented Lagrangian, the code of d229c41 (run "
+                       "2026-12-07)",
          "direct": "double-precision factors",
          "amg": "GMRES-AMG",
+         "d229c41-amg": "GMRES-AMG, the code of d229c41 (run 2026-12-07)",
          "monotone": "Line search memory = 1 (monotone)",
          "linear": "Predictor = linear",
          "best": "Predictor = best linear"}
