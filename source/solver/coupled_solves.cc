@@ -15,7 +15,7 @@ namespace DuctileContact
 
 
   CoupledDirectSolve::CoupledDirectSolve(SolveContext &context)
-      : context(context)
+      : SolveStrategy(context)
       , copy(context.discretisation)
   {
   }
@@ -51,13 +51,6 @@ namespace DuctileContact
                            same_matrix && same_pattern);
     copy.get_solution(x);
     return n_solves;
-  }
-
-
-
-  CoupledKrylovSolve::CoupledKrylovSolve(SolveContext &context)
-      : context(context)
-  {
   }
 
 

@@ -30,13 +30,6 @@ namespace DuctileContact
 
 
 
-  DisplacementDirectSolve::DisplacementDirectSolve(SolveContext &context)
-      : context(context)
-  {
-  }
-
-
-
   unsigned int
   DisplacementDirectSolve::solve(const TrilinosWrappers::BlockSparseMatrix &K,
                                  TrilinosWrappers::MPI::BlockVector        &x,
@@ -54,13 +47,6 @@ namespace DuctileContact
         ? 0.
         : accuracy.enough / accuracy.block_weights[Block::displacement],
       same_matrix);
-  }
-
-
-
-  DisplacementKrylovSolve::DisplacementKrylovSolve(SolveContext &context)
-      : context(context)
-  {
   }
 
 

@@ -63,6 +63,11 @@ namespace DuctileContact
   class SolveStrategy
   {
   public:
+    explicit SolveStrategy(SolveContext &context)
+        : context(context)
+    {
+    }
+
     virtual ~SolveStrategy() = default;
 
     virtual unsigned int
@@ -77,13 +82,16 @@ namespace DuctileContact
     reset()
     {
     }
+
+  protected:
+    SolveContext &context;
   };
 
   /// The displacement block alone (alpha and s empty) by the direct solver.
   class DisplacementDirectSolve : public SolveStrategy
   {
   public:
-    explicit DisplacementDirectSolve(SolveContext &context);
+    using SolveStrategy::SolveStrategy;
 
     unsigned int
     solve(const dealii::TrilinosWrappers::BlockSparseMatrix &K,
@@ -91,9 +99,6 @@ namespace DuctileContact
           const dealii::TrilinosWrappers::MPI::BlockVector  &b,
           const SolveAccuracy                               &accuracy,
           bool same_matrix) override;
-
-  private:
-    SolveContext &context;
   };
 
   /**
@@ -104,7 +109,7 @@ namespace DuctileContact
   class DisplacementKrylovSolve : public SolveStrategy
   {
   public:
-    explicit DisplacementKrylovSolve(SolveContext &context);
+    using SolveStrategy::SolveStrategy;
 
     unsigned int
     solve(const dealii::TrilinosWrappers::BlockSparseMatrix &K,
@@ -112,9 +117,6 @@ namespace DuctileContact
           const dealii::TrilinosWrappers::MPI::BlockVector  &b,
           const SolveAccuracy                               &accuracy,
           bool same_matrix) override;
-
-  private:
-    SolveContext &context;
   };
 
   /**
@@ -139,7 +141,6 @@ namespace DuctileContact
     reset() override;
 
   private:
-    SolveContext  &context;
     MonolithicCopy copy;
   };
 
@@ -154,7 +155,7 @@ namespace DuctileContact
   class CoupledKrylovSolve : public SolveStrategy
   {
   public:
-    explicit CoupledKrylovSolve(SolveContext &context);
+    using SolveStrategy::SolveStrategy;
 
     unsigned int
     solve(const dealii::TrilinosWrappers::BlockSparseMatrix &K,
@@ -167,7 +168,6 @@ namespace DuctileContact
     reset() override;
 
   private:
-    SolveContext &context;
     /// Exact factors of the s block (`Phase-field preconditioner = direct`),
     /// whose analysis is kept while the pattern is.
     std::unique_ptr<DirectSolve> phase_field_factors;
