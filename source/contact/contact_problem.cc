@@ -173,6 +173,17 @@ namespace DuctileContact
 
 
   void
+  ContactProblem::add_constrained_rows(ConstrainedNodes &nodes) const
+  {
+    for (const Pair &pair : data)
+      nodes.insert(nodes.end(),
+                   pair.constrained_rows.begin(),
+                   pair.constrained_rows.end());
+  }
+
+
+
+  void
   ContactProblem::assemble(const TrilinosWrappers::MPI::BlockVector &u,
                            const AffineConstraints<double> &constraints,
                            const AssemblyTargets           &targets)

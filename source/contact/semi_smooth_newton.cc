@@ -281,6 +281,54 @@ namespace DuctileContact
 
 
 
+  void
+  SemiSmoothNewton::record_constrained_rows(ContactPair          &pair,
+                                            const CondensedNodes &nodes)
+  {
+    pair.constrained_rows.clear();
+    for (unsigned int j = 0; j < pair.slave.nodes.size(); ++j)
+      {
+        const NodalComplementarity &law  = nodes.law[j];
+        const auto                 &free = nodes.free[j];
+        if (!pair.carries_contact(j) || !law.active ||
+            !pair.slave.nodes[j].parents.empty() ||
+            std::find(free.begin(), free.end(), false) != free.end())
+          continue;
+        Tensor<1, dim> n = pair.aggregates[j].normal;
+        if (n.norm() == 0.)
+          continue;
+        n /= n.norm();
+        // The frame: n, then the coordinate axes least aligned with it,
+        // orthonormalised (Gram-Schmidt).
+        std::array<unsigned int, dim> axes;
+        for (unsigned int c = 0; c < dim; ++c)
+          axes[c] = c;
+        std::sort(axes.begin(), axes.end(), [&](const auto a, const auto b) {
+          return std::abs(n[a]) < std::abs(n[b]);
+        });
+        std::array<Tensor<1, dim>, dim> q;
+        q[0] = n;
+        for (unsigned int k = 1; k < dim; ++k)
+          {
+            q[k][axes[k - 1]] = 1.;
+            for (unsigned int i = 0; i < k; ++i)
+              q[k] -= (q[k] * q[i]) * q[i];
+            q[k] /= q[k].norm();
+          }
+        ConstrainedNode node;
+        node.dofs.assign(pair.slave.nodes[j].dofs.begin(),
+                         pair.slave.nodes[j].dofs.end());
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int c = 0; c < dim; ++c)
+            node.frame.push_back(q[k][c]);
+        // Stick: C_T = -c_T A s holds no traction either.
+        node.n_constrained = law.friction_state == 1 ? dim : 1;
+        pair.constrained_rows.push_back(std::move(node));
+      }
+  }
+
+
+
   SemiSmoothNewton::Matrix3
   SemiSmoothNewton::CondensedNodes::row_weights(const unsigned int j,
                                                 const double       area) const
@@ -535,6 +583,8 @@ namespace DuctileContact
     Assert(targets.residual != nullptr, ExcInternalError());
     CondensedNodes nodes;
     condensed_states(pair, constraints, targets, nodes);
+    if (targets.tangent)
+      record_constrained_rows(pair, nodes);
     const unsigned int ns = pair.slave.nodes.size();
     // The tractions whose dM terms this rank adds: those of its nodes and,
     // at a hanging node, the share its parents here interpolate.

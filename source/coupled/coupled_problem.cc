@@ -321,6 +321,12 @@ namespace DuctileContact
                                                 : ": integration, residual"));
         m->assemble(u_ghosted, constraints, targets);
       }
+    if (targets.tangent)
+      {
+        constrained.clear();
+        for (const PhysicsModule *m : modules)
+          m->add_constrained_rows(constrained);
+      }
     return info;
   }
 

@@ -8,6 +8,7 @@
 #include <Epetra_Map.h>
 #include <Epetra_MpiComm.h>
 #include <Teuchos_ParameterList.hpp>
+#include <map>
 #include <vector>
 
 namespace DuctileContact
@@ -38,6 +39,24 @@ namespace DuctileContact
                  const unsigned int                    degree,
                  const double                          aggregation_threshold,
                  const Epetra_MultiVector             *modes)
+  {
+    initialize_amg(A.trilinos_matrix(),
+                   amg,
+                   parameters,
+                   degree,
+                   aggregation_threshold,
+                   modes);
+  }
+
+
+
+  void
+  initialize_amg(const Epetra_RowMatrix            &A,
+                 TrilinosWrappers::PreconditionAMG &amg,
+                 const LinearSolverParameters      &parameters,
+                 const unsigned int                 degree,
+                 const double                       aggregation_threshold,
+                 const Epetra_MultiVector          *modes)
   {
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
@@ -75,12 +94,21 @@ namespace DuctileContact
       discretisation.owned_partitioning[Block::displacement];
     const Epetra_Map map =
       block_map(owned, discretisation.dof_handler.get_communicator());
-    auto modes = std::make_unique<Epetra_MultiVector>(map, n_modes);
+    // One set of modes per body: bodies that touch through contact only
+    // move rigidly against each other at little energy, which the
+    // aggregates of both sides must be able to represent.
+    std::map<types::material_id, unsigned int> body_index;
+    for (const auto &entry : discretisation.bodies)
+      body_index.emplace(entry.first, body_index.size());
+    const unsigned int n_sets = std::max<std::size_t>(1, body_index.size());
+    auto modes = std::make_unique<Epetra_MultiVector>(map, n_modes * n_sets);
 
     std::vector<types::global_dof_index> dof_indices;
     for (const auto &cell : discretisation.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
+          const unsigned int set =
+            body_index.empty() ? 0 : body_index.at(cell->material_id());
           const FiniteElement<dim> &fe = cell->get_fe();
           dof_indices.resize(fe.n_dofs_per_cell());
           cell->get_dof_indices(dof_indices);
@@ -101,7 +129,7 @@ namespace DuctileContact
                 for (unsigned int b = a + 1; b < dim; ++b, ++r)
                   mode[r] = c == a ? -x[b] : c == b ? x[a] : 0.;
               for (unsigned int k = 0; k < n_modes; ++k)
-                (*modes)[k][row] = mode[k];
+                (*modes)[set * n_modes + k][row] = mode[k];
             }
         }
     return modes;

@@ -6,6 +6,7 @@
 
 #include <ductile_contact/solver/amg.h>
 #include <ductile_contact/solver/block_preconditioner.h>
+#include <ductile_contact/solver/displacement_preconditioner.h>
 #include <ductile_contact/solver/solve_strategy.h>
 
 namespace DuctileContact
@@ -75,14 +76,13 @@ namespace DuctileContact
     using Inverse = BlockTriangularPreconditioner::BlockInverse;
     std::vector<Inverse> inverses(Block::n_blocks);
 
-    // u: the AMG of the displacement-only solver.
-    TrilinosWrappers::PreconditionAMG amg_u;
-    initialize_amg(K.block(Block::displacement, Block::displacement),
-                   amg_u,
-                   parameters,
-                   discretisation.degree,
-                   parameters.aggregation_threshold,
-                   context.rigid_body_modes.get());
+    // u: the preconditioner of the displacement-only solver.
+    DisplacementPreconditioner amg_u;
+    amg_u.initialize(K.block(Block::displacement, Block::displacement),
+                     context.constrained,
+                     parameters,
+                     discretisation.degree,
+                     context.rigid_body_modes.get());
     inverses[Block::displacement] = [&](auto &y, const auto &r) {
       amg_u.vmult(y, r);
     };

@@ -5,7 +5,7 @@
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
-#include <ductile_contact/solver/amg.h>
+#include <ductile_contact/solver/displacement_preconditioner.h>
 #include <ductile_contact/solver/solve_strategy.h>
 
 #include <algorithm>
@@ -63,12 +63,11 @@ namespace DuctileContact
     auto       &xu = x.block(Block::displacement);
     const auto &bu = b.block(Block::displacement);
 
-    TrilinosWrappers::PreconditionAMG amg;
-    initialize_amg(A,
-                   amg,
+    DisplacementPreconditioner amg;
+    amg.initialize(A,
+                   context.constrained,
                    parameters,
                    context.discretisation.degree,
-                   parameters.aggregation_threshold,
                    context.rigid_body_modes.get());
 
     SolverControl control(

@@ -64,7 +64,8 @@ namespace DuctileContact
                       TrilinosWrappers::MPI::BlockVector        &x,
                       const TrilinosWrappers::MPI::BlockVector  &b,
                       const SolveAccuracy                       &accuracy,
-                      const bool                                 same_matrix)
+                      const bool                                 same_matrix,
+                      const ConstrainedNodes                    *constrained)
   {
     Assert(accuracy.block_weights.empty() ||
              accuracy.block_weights.size() == b.n_blocks(),
@@ -74,6 +75,7 @@ namespace DuctileContact
              ExcMessage("every block with DoFs needs a positive weight"));
     // The parameters may change between solves (a resumed run, the tests).
     context.direct.configure(DirectSolveSettings::of(context.parameters));
+    context.constrained = constrained;
     return strategy().solve(K, x, b, accuracy, same_matrix);
   }
 

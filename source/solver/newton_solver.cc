@@ -383,7 +383,8 @@ namespace DuctileContact
                                   problem.keeps_tangent()
                                 ? linear_accuracy(problem, *fast_tolerances)
                                 : SolveAccuracy(),
-                              chord);
+                              chord,
+                              problem.constrained_rows());
       }
     catch (const SolverControl::NoConvergence &e)
       {

@@ -437,6 +437,19 @@ namespace DuctileContact
       "nothing); its iterations still grow with l_f/h; direct: a sparse LU of "
       "that block "
       "with the Direct solver package, factorised once per linear solve.");
+    add_option(
+      prm,
+      "Constrained rows",
+      constrained_rows,
+      constrained_rows_names(),
+      "Iterative types: what the displacement block's AMG sees of the rows "
+      "of active contact nodes (semi-smooth Newton), which hold the "
+      "complementarity function and no bulk stiffness of the node. keep: "
+      "the AMG coarsens the block as assembled. eliminate: the constrained "
+      "components (normal; tangential where a node sticks) are taken out "
+      "in each node's frame, and the AMG sees the Schur complement, the "
+      "stiffness of the bodies tied through the mortar projection; the "
+      "answer is the same.");
     prm.leave_subsection();
   }
 

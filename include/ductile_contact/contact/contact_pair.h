@@ -7,6 +7,7 @@
 #include <ductile_contact/contact/contact_surface.h>
 #include <ductile_contact/contact/mortar_operators.h>
 #include <ductile_contact/contact/nodal_contact.h>
+#include <ductile_contact/solver/constrained_rows.h>
 
 #include <cstddef>
 #include <map>
@@ -98,9 +99,12 @@ namespace DuctileContact
     /// each hanging node added, times its weight, to its parents' rows
     /// (fold_hanging_nodes()); empty otherwise.
     std::vector<std::map<unsigned int, double>> folded_M;
-    std::vector<NodalAggregates>                aggregates;
-    std::vector<double>                         normal_length;
-    std::vector<NodalContactState>              nodal;
+    /// Of the last tangent assembly: the slave nodes whose rows hold
+    /// constraints (semi-smooth Newton's active nodes), in their frames.
+    ConstrainedNodes               constrained_rows;
+    std::vector<NodalAggregates>   aggregates;
+    std::vector<double>            normal_length;
+    std::vector<NodalContactState> nodal;
 
     /// Whether slave node @p j has a share of the overlap (only those
     /// carry contact).

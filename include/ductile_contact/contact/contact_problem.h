@@ -181,6 +181,12 @@ namespace DuctileContact
     std::string
     fault() const override;
 
+    /// The active slave nodes of the pairs that condense (semi-smooth
+    /// Newton): their normal rows, and their tangential rows where they
+    /// stick, hold the complementarity function.
+    void
+    add_constrained_rows(ConstrainedNodes &nodes) const override;
+
     const std::vector<ContactPairSummary> &
     summary() const
     {

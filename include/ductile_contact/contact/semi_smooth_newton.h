@@ -93,6 +93,14 @@ namespace DuctileContact
                      CondensedNodes                          &nodes) const;
 
 
+    /// pair.constrained_rows: the nodes of @p nodes that are active, in
+    /// the frame (n, t...) of their normal; the normal row is a constraint,
+    /// and so are the tangential ones where the node sticks. Nodes with a
+    /// fixed component or hanging on others are left out.
+    static void
+    record_constrained_rows(ContactPair &pair, const CondensedNodes &nodes);
+
+
     /// Residual, right-hand side and internal force of the slave rows of
     /// node @p j and of the master rows it couples to.
     void

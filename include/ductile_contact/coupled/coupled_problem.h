@@ -131,6 +131,11 @@ namespace DuctileContact
     {
       return newton_rhs;
     }
+    const ConstrainedNodes *
+    constrained_rows() const override
+    {
+      return &constrained;
+    }
     void
     distribute(Vector &d) const override;
     std::string
@@ -192,6 +197,8 @@ namespace DuctileContact
     /// The name of tangent's sparsity pattern (AssemblyTargets::pattern).
     std::uint64_t tangent_pattern = 0;
     Vector        newton_rhs, residual, force, u_ghosted;
+    /// The modules' constraint rows in #tangent.
+    ConstrainedNodes constrained;
 
     AssemblyInfo last_info, accepted_info;
     /// The branches of the last tangent assembly (frozen in the line

@@ -9,6 +9,7 @@
 #include <ductile_contact/assembly/assembly_data.h>
 #include <ductile_contact/output/output_parameters.h>
 #include <ductile_contact/output/statistics.h>
+#include <ductile_contact/solver/constrained_rows.h>
 
 #include <string>
 #include <utility>
@@ -28,9 +29,9 @@ namespace DuctileContact
    *    add_couplings() for the sparsity pattern;
    *  - step: begin_step() (true when its couplings changed, so that the
    *    pattern is rebuilt), assemble() into the bulk targets at every
-   *    Newton iteration, fault() when a state must not be accepted,
-   *    outer_update() between Newton solves (e.g. Uzawa updates of the
-   *    augmented Lagrangian), commit() on an accepted step;
+   *    Newton iteration, add_constrained_rows() after a tangent, fault() when a
+   * state must not be accepted, outer_update() between Newton solves (e.g.
+   * Uzawa updates of the augmented Lagrangian), commit() on an accepted step;
    *  - account and output: dissipation() for the energy balance,
    *    add_columns() for the statistics, write_output();
    *  - checkpoint: committed_state() and restore_committed_state(), the
@@ -81,6 +82,14 @@ namespace DuctileContact
     assemble(const dealii::TrilinosWrappers::MPI::BlockVector &u,
              const dealii::AffineConstraints<double>          &constraints,
              const AssemblyTargets                            &targets) = 0;
+
+    /// Adds the rows of the last tangent assembly that hold constraints
+    /// (none by default).
+    virtual void
+    add_constrained_rows(ConstrainedNodes &nodes) const
+    {
+      (void)nodes;
+    }
 
     /// Why the state of the last assembly cannot be accepted ("" when it
     /// can).

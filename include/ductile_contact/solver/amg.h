@@ -7,6 +7,7 @@
 #include <ductile_contact/solver/solver_parameters.h>
 
 #include <Epetra_MultiVector.h>
+#include <Epetra_RowMatrix.h>
 #include <memory>
 
 namespace DuctileContact
@@ -25,11 +26,24 @@ namespace DuctileContact
                  double                    aggregation_threshold,
                  const Epetra_MultiVector *modes = nullptr);
 
+  /// The same for a matrix built outside deal.II (its map that of the
+  /// block's rows, as @p modes').
+  void
+  initialize_amg(const Epetra_RowMatrix                    &A,
+                 dealii::TrilinosWrappers::PreconditionAMG &amg,
+                 const LinearSolverParameters              &parameters,
+                 unsigned int                               degree,
+                 double                    aggregation_threshold,
+                 const Epetra_MultiVector *modes = nullptr);
+
   /**
    * The rigid-body modes on the locally owned displacement DoFs (block-local
    * numbers), the near-null space of the displacement AMG: the dim
    * translations e_r and a rotation in each coordinate plane (i, j), u_i =
-   * -x_j, u_j = x_i, at the support points.
+   * -x_j, u_j = x_i, at the support points; a set of them per body (zero
+   * off the body), since bodies that touch through contact alone move
+   * rigidly against each other at little energy (a sliding block, a
+   * cantilever under its indenter).
    */
   std::unique_ptr<Epetra_MultiVector>
   make_rigid_body_modes(const Discretisation &discretisation);

@@ -42,13 +42,15 @@ namespace DuctileContact
     /// Returns the number of iterations (1 for the direct solver).
     /// @p same_matrix: K is the matrix of the last solve, values unchanged
     /// (a chord step): its copy for the direct solver and the check of the
-    /// factors' pattern are skipped.
+    /// factors' pattern are skipped. @p constrained: the rows of K that
+    /// hold constraints (null: none), for the iterative solvers.
     unsigned int
     solve(const dealii::TrilinosWrappers::BlockSparseMatrix &K,
           dealii::TrilinosWrappers::MPI::BlockVector        &x,
           const dealii::TrilinosWrappers::MPI::BlockVector  &b,
           const SolveAccuracy                               &accuracy = {},
-          bool same_matrix                                            = false);
+          bool                    same_matrix                         = false,
+          const ConstrainedNodes *constrained = nullptr);
 
     /// One line on the direct solver's work so far (analyses,
     /// factorisations, solves and their times), if it kept any.

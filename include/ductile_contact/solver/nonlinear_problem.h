@@ -3,6 +3,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <ductile_contact/solver/constrained_rows.h>
+
 #include <limits>
 #include <string>
 #include <vector>
@@ -138,6 +140,14 @@ namespace DuctileContact
 
     virtual const Vector &
     system_rhs() const = 0;
+
+    /// The rows of system_matrix() that hold constraints (null: none),
+    /// which an iterative linear solver may eliminate.
+    virtual const ConstrainedNodes *
+    constrained_rows() const
+    {
+      return nullptr;
+    }
 
     /// Sets the constrained entries of a solution @p d of the linear
     /// system.

@@ -4,6 +4,7 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <ductile_contact/discretisation/discretisation.h>
+#include <ductile_contact/solver/constrained_rows.h>
 #include <ductile_contact/solver/direct_solve.h>
 #include <ductile_contact/solver/monolithic_copy.h>
 #include <ductile_contact/solver/solver_parameters.h>
@@ -53,6 +54,8 @@ namespace DuctileContact
     /// The constant and the coordinates on the owned s DoFs (null without).
     std::unique_ptr<Epetra_MultiVector> phase_field_modes;
     DirectSolve                         direct;
+    /// The constraint rows of the matrix being solved (null: none).
+    const ConstrainedNodes *constrained = nullptr;
   };
 
   /**

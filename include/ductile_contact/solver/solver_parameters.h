@@ -296,6 +296,23 @@ namespace DuctileContact
     return t;
   }
 
+  /// Linear solver/Constrained rows: what the displacement AMG sees of the
+  /// rows that hold constraints (DisplacementPreconditioner).
+  enum class ConstrainedRows
+  {
+    keep,
+    eliminate
+  };
+
+  inline const NameTable<ConstrainedRows> &
+  constrained_rows_names()
+  {
+    static const NameTable<ConstrainedRows> t{{ConstrainedRows::keep, "keep"},
+                                              {ConstrainedRows::eliminate,
+                                               "eliminate"}};
+    return t;
+  }
+
   struct LinearSolverParameters
   {
     LinearSolverType type          = LinearSolverType::direct;
@@ -320,6 +337,8 @@ namespace DuctileContact
     /// amg | direct: approximate inverse of the s-s block (coupled systems).
     PhaseFieldPreconditioner phase_field_preconditioner =
       PhaseFieldPreconditioner::amg;
+    /// keep | eliminate: the contact rows in the displacement AMG.
+    ConstrainedRows constrained_rows = ConstrainedRows::keep;
 
     void
     declare(dealii::ParameterHandler &prm);
