@@ -29,6 +29,7 @@ variants=(
   "gmres-amg-sgs:Type = gmres-amg|AMG smoother = symmetric Gauss-Seidel"
   "gmres-amg-sgs-r400:Type = gmres-amg|AMG smoother = symmetric Gauss-Seidel|GMRES restart = 400"
   "gmres-amg-pf-direct:Type = gmres-amg|Phase-field preconditioner = direct"
+  "gmres-amg-elim:Type = gmres-amg|Constrained rows = eliminate"
 )
 selected=("$@")
 
@@ -44,6 +45,10 @@ for entry in "${cases[@]}"; do
       # The phase-field preconditioners only differ with s unknowns.
       if [[ $variant == gmres-amg-pf-direct && ( $name == strip_elastic ||
             $name == hertz_cylinder_2d || $name == two_bodies ) ]]; then
+        continue
+      fi
+      # Constraint rows come from contact only.
+      if [[ $variant == gmres-amg-elim && $name == ductile_notch_2d ]]; then
         continue
       fi
       out=$here/runs/$name/r$r-$variant
