@@ -67,24 +67,23 @@ main(int argc, char **argv)
       for (const std::string &c : compared)
         for (std::size_t k = 1; k < direct.at(c).size(); ++k)
           {
-            const double scale = c == "F2_y" ? std::abs(direct.at(c)[k]) :
-                                               direct.at("external_work")[k];
-            worst = std::max(worst,
-                             std::abs(t.at(c)[k] - direct.at(c)[k]) / scale);
+            const double scale = c == "F2_y" ? std::abs(direct.at(c)[k])
+                                             : direct.at("external_work")[k];
+            worst =
+              std::max(worst, std::abs(t.at(c)[k] - direct.at(c)[k]) / scale);
           }
       out << "gmres-amg, constrained rows " << rows
           << ": every step as the direct solver's to 1e-6: "
           << Testing::yes_no(t.at("time").size() == direct.at("time").size() &&
                              worst < 1e-6)
           << "\n";
-      std::cout << rows << ": worst relative difference " << worst
-                << std::endl;
+      std::cout << rows << ": worst relative difference " << worst << std::endl;
     }
   const std::size_t last = direct.at("time").size() - 1;
   out << std::setprecision(5) << "at 3 mm: F2_y " << direct.at("F2_y")[last]
       << " N/m, W_ext " << direct.at("external_work")[last]
-      << " J/m, crack energy "
-      << direct.at("fracture_energy")[last] << " J/m, friction "
-      << direct.at("contact1_dissipation")[last] << " J/m, active nodes "
-      << direct.at("contact1_active_nodes")[last] << "\n";
+      << " J/m, crack energy " << direct.at("fracture_energy")[last]
+      << " J/m, friction " << direct.at("contact1_dissipation")[last]
+      << " J/m, active nodes " << direct.at("contact1_active_nodes")[last]
+      << "\n";
 }
