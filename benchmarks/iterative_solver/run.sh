@@ -8,7 +8,8 @@
 # Newton iterations, Krylov iterations per solve (mean and largest), linear
 # solve time per Newton iteration and the scene's last force, which must be
 # the same for every variant of a case and refinement.
-# Usage: benchmarks/iterative_solver/run.sh [CASE...]   (default: all)
+# Usage: [VARIANTS="v ..."] benchmarks/iterative_solver/run.sh [CASE...]
+#   (default: all cases and variants)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../scripts/env.sh"
@@ -30,8 +31,15 @@ variants=(
   "gmres-amg-sgs-r400:Type = gmres-amg|AMG smoother = symmetric Gauss-Seidel|GMRES restart = 400"
   "gmres-amg-pf-direct:Type = gmres-amg|Phase-field preconditioner = direct"
   "gmres-amg-elim:Type = gmres-amg|Constrained rows = eliminate"
+  "gmres-amg-pb:Type = gmres-amg|Rigid-body modes = per body"
+  "gmres-amg-sgs-pb:Type = gmres-amg|AMG smoother = symmetric Gauss-Seidel|Rigid-body modes = per body"
+  "gmres-amg-sgs-r400-pb:Type = gmres-amg|AMG smoother = symmetric Gauss-Seidel|GMRES restart = 400|Rigid-body modes = per body"
+  "gmres-amg-pf-direct-pb:Type = gmres-amg|Phase-field preconditioner = direct|Rigid-body modes = per body"
+  "gmres-amg-elim-pb:Type = gmres-amg|Constrained rows = eliminate|Rigid-body modes = per body"
 )
 selected=("$@")
+# VARIANTS="a b": only these variants (default: all).
+only=(${VARIANTS:-})
 
 for entry in "${cases[@]}"; do
   IFS=: read -r name scene end refinements extra <<< "$entry"
@@ -42,13 +50,18 @@ for entry in "${cases[@]}"; do
     for v in "${variants[@]}"; do
       variant=${v%%:*}
       settings=${v#*:}
+      if ((${#only[@]})) && [[ ! " ${only[*]} " == *" $variant "* ]]; then
+        continue
+      fi
       # The phase-field preconditioners only differ with s unknowns.
-      if [[ $variant == gmres-amg-pf-direct && ( $name == strip_elastic ||
+      if [[ $variant == gmres-amg-pf-direct* && ( $name == strip_elastic ||
             $name == hertz_cylinder_2d || $name == two_bodies ) ]]; then
         continue
       fi
-      # Constraint rows come from contact only.
-      if [[ $variant == gmres-amg-elim && $name == ductile_notch_2d ]]; then
+      # Constraint rows come from contact only, and one body has one set
+      # of rigid-body modes.
+      if [[ ( $variant == gmres-amg-elim* || $variant == *-pb ) &&
+            $name == ductile_notch_2d ]]; then
         continue
       fi
       out=$here/runs/$name/r$r-$variant

@@ -7,6 +7,7 @@
 #             (single-precision factors are the default)
 #   al        two_bodies with the augmented Lagrangian enforcement
 #   amg       hertz_sphere with GMRES-AMG
+#   amg-elim  the same with the contact rows eliminated (Constrained rows)
 #   constant  the constant predictor (scenes that start from the linear one)
 #   newton    block_on_plate with a tangent in every Newton iteration
 #   relative  linear solves to their relative tolerance instead of Newton's
@@ -38,7 +39,7 @@ declare -A variants=(
   [two_bodies]="default output relative constant al direct"
   [two_bodies_no_contact]="default output"
   [block_on_plate]="default output relative newton direct constant"
-  [hertz_sphere]="default output direct amg"
+  [hertz_sphere]="default output direct amg amg-elim"
   [hertz_cylinder_2d]="default output"
   [ironing]="default output relative direct"
   [ironing_2d]="default output"
@@ -54,6 +55,7 @@ declare -A settings=(
   [al]="subsection Contact pair 1;  set Enforcement = augmented Lagrangian;end"
   [direct]="subsection Linear solver;  set Type = direct;  set Factorisation precision = double;end"
   [amg]="subsection Linear solver;  set Type = gmres-amg;end"
+  [amg-elim]="subsection Linear solver;  set Type = gmres-amg;  set Constrained rows = eliminate;end"
   [constant]="subsection Load stepping;  set Predictor = constant;end"
   [newton]="subsection Newton;  set Tangent update = every iteration;end"
   [relative]="subsection Newton;  set Linear solve accuracy = relative tolerance;end"

@@ -82,7 +82,8 @@ namespace DuctileContact
 
 
   std::unique_ptr<Epetra_MultiVector>
-  make_rigid_body_modes(const Discretisation &discretisation)
+  make_rigid_body_modes(const Discretisation &discretisation,
+                        const bool            per_body)
   {
     // deal.II 9.4 has no DoFTools::extract_rigid_body_modes: build them from
     // the support points. Modes at a DoF of component c and point x: the
@@ -94,12 +95,10 @@ namespace DuctileContact
       discretisation.owned_partitioning[Block::displacement];
     const Epetra_Map map =
       block_map(owned, discretisation.dof_handler.get_communicator());
-    // One set of modes per body: bodies that touch through contact only
-    // move rigidly against each other at little energy, which the
-    // aggregates of both sides must be able to represent.
     std::map<types::material_id, unsigned int> body_index;
-    for (const auto &entry : discretisation.bodies)
-      body_index.emplace(entry.first, body_index.size());
+    if (per_body)
+      for (const auto &entry : discretisation.bodies)
+        body_index.emplace(entry.first, body_index.size());
     const unsigned int n_sets = std::max<std::size_t>(1, body_index.size());
     auto modes = std::make_unique<Epetra_MultiVector>(map, n_modes * n_sets);
 

@@ -40,13 +40,13 @@ namespace DuctileContact
    * The rigid-body modes on the locally owned displacement DoFs (block-local
    * numbers), the near-null space of the displacement AMG: the dim
    * translations e_r and a rotation in each coordinate plane (i, j), u_i =
-   * -x_j, u_j = x_i, at the support points; a set of them per body (zero
-   * off the body), since bodies that touch through contact alone move
-   * rigidly against each other at little energy (a sliding block, a
-   * cantilever under its indenter).
+   * -x_j, u_j = x_i, at the support points; with @p per_body a set of
+   * them per body (zero off the body): bodies that touch through contact
+   * alone move rigidly against each other at little energy (a sliding
+   * block, a cantilever under its indenter).
    */
   std::unique_ptr<Epetra_MultiVector>
-  make_rigid_body_modes(const Discretisation &discretisation);
+  make_rigid_body_modes(const Discretisation &discretisation, bool per_body);
 
   /**
    * The constant and the dim coordinates on the locally owned DoFs of the

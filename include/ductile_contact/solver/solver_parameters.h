@@ -313,6 +313,23 @@ namespace DuctileContact
     return t;
   }
 
+  /// Linear solver/Rigid-body modes: the displacement AMG's near-null
+  /// space.
+  enum class RigidBodyModes
+  {
+    whole_mesh,
+    per_body
+  };
+
+  inline const NameTable<RigidBodyModes> &
+  rigid_body_modes_names()
+  {
+    static const NameTable<RigidBodyModes> t{
+      {RigidBodyModes::whole_mesh, "whole mesh"},
+      {RigidBodyModes::per_body, "per body"}};
+    return t;
+  }
+
   struct LinearSolverParameters
   {
     LinearSolverType type          = LinearSolverType::direct;
@@ -339,6 +356,8 @@ namespace DuctileContact
       PhaseFieldPreconditioner::amg;
     /// keep | eliminate: the contact rows in the displacement AMG.
     ConstrainedRows constrained_rows = ConstrainedRows::keep;
+    /// whole mesh | per body: the displacement AMG's near-null space.
+    RigidBodyModes rigid_body_modes = RigidBodyModes::whole_mesh;
 
     void
     declare(dealii::ParameterHandler &prm);
