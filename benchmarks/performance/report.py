@@ -113,9 +113,9 @@ names = {"2a1bd1b": "defaults of 2a1bd1b (run 2026-12-02)",
          "direct": "double-precision factors",
          "amg": "GMRES-AMG",
          "d229c41-amg": "GMRES-AMG, the code of d229c41 (run 2026-12-07)",
-         "3ddcce9-amg": "GMRES-AMG, the code of 3ddcce9 (one set of rigid-body "
-                        "modes for both bodies; run 2026-12-07)",
          "amg-elim": "GMRES-AMG, Constrained rows = eliminate",
+         "amg-elim-pb": "GMRES-AMG, Constrained rows = eliminate, "
+                        "Rigid-body modes = per body",
          "monotone": "Line search memory = 1 (monotone)",
          "linear": "Predictor = linear",
          "best": "Predictor = best linear"}

@@ -8,6 +8,7 @@
 #   al        two_bodies with the augmented Lagrangian enforcement
 #   amg       hertz_sphere with GMRES-AMG
 #   amg-elim  the same with the contact rows eliminated (Constrained rows)
+#   amg-elim-pb  and the rigid-body modes of each body (Rigid-body modes)
 #   constant  the constant predictor (scenes that start from the linear one)
 #   newton    block_on_plate with a tangent in every Newton iteration
 #   relative  linear solves to their relative tolerance instead of Newton's
@@ -39,7 +40,7 @@ declare -A variants=(
   [two_bodies]="default output relative constant al direct"
   [two_bodies_no_contact]="default output"
   [block_on_plate]="default output relative newton direct constant"
-  [hertz_sphere]="default output direct amg amg-elim"
+  [hertz_sphere]="default output direct amg amg-elim amg-elim-pb"
   [hertz_cylinder_2d]="default output"
   [ironing]="default output relative direct"
   [ironing_2d]="default output"
@@ -56,6 +57,7 @@ declare -A settings=(
   [direct]="subsection Linear solver;  set Type = direct;  set Factorisation precision = double;end"
   [amg]="subsection Linear solver;  set Type = gmres-amg;end"
   [amg-elim]="subsection Linear solver;  set Type = gmres-amg;  set Constrained rows = eliminate;end"
+  [amg-elim-pb]="subsection Linear solver;  set Type = gmres-amg;  set Constrained rows = eliminate;  set Rigid-body modes = per body;end"
   [constant]="subsection Load stepping;  set Predictor = constant;end"
   [newton]="subsection Newton;  set Tangent update = every iteration;end"
   [relative]="subsection Newton;  set Linear solve accuracy = relative tolerance;end"
