@@ -60,9 +60,10 @@ namespace
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < dofs.size(); ++i)
           {
-            const Point<d>              &x = points[dofs[i]];
-            const std::array<double, d> key{
-              {std::round(6 * x[0]), std::round(6 * x[1]), std::round(6 * x[2])}};
+            const Point<d>             &x = points[dofs[i]];
+            const std::array<double, d> key{{std::round(6 * x[0]),
+                                             std::round(6 * x[1]),
+                                             std::round(6 * x[2])}};
             nodes[key][dh.get_fe().system_to_component_index(i).first] =
               dofs[i];
           }
@@ -72,16 +73,16 @@ namespace
 
   /// Vector Laplacian plus mass, the rows of @p owned.
   void
-  assemble(const DoFHandler<d>          &dh,
-           const IndexSet               &owned,
+  assemble(const DoFHandler<d>            &dh,
+           const IndexSet                 &owned,
            TrilinosWrappers::SparseMatrix &A)
   {
-    const QGauss<d>  quadrature(3);
-    FEValues<d>      fe_values(dh.get_fe(),
+    const QGauss<d>                      quadrature(3);
+    FEValues<d>                          fe_values(dh.get_fe(),
                           quadrature,
                           update_values | update_gradients | update_JxW_values);
-    const unsigned int n = dh.get_fe().n_dofs_per_cell();
-    FullMatrix<double> local(n, n);
+    const unsigned int                   n = dh.get_fe().n_dofs_per_cell();
+    FullMatrix<double>                   local(n, n);
     std::vector<types::global_dof_index> dofs(n);
     for (const auto &cell : dh.active_cell_iterators())
       {
@@ -92,11 +93,10 @@ namespace
             for (unsigned int j = 0; j < n; ++j)
               if (dh.get_fe().system_to_component_index(i).first ==
                   dh.get_fe().system_to_component_index(j).first)
-                local(i, j) += (fe_values.shape_grad(i, q) *
-                                  fe_values.shape_grad(j, q) +
-                                fe_values.shape_value(i, q) *
-                                  fe_values.shape_value(j, q)) *
-                               fe_values.JxW(q);
+                local(i, j) +=
+                  (fe_values.shape_grad(i, q) * fe_values.shape_grad(j, q) +
+                   fe_values.shape_value(i, q) * fe_values.shape_value(j, q)) *
+                  fe_values.JxW(q);
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           if (owned.is_element(dofs[i]))
@@ -115,7 +115,7 @@ namespace
     Tensor<1, d> t({1., 0., 0.});
     t -= (t * n) * n;
     t /= t.norm();
-    const Tensor<1, d> s = cross_product_3d(n, t);
+    const Tensor<1, d>  s = cross_product_3d(n, t);
     std::vector<double> q;
     for (const auto &v : {n, t, s})
       for (unsigned int c = 0; c < d; ++c)
@@ -133,7 +133,7 @@ namespace
             const Dofs                     &below,
             TrilinosWrappers::SparseMatrix &A)
   {
-    const auto &q = node.frame;
+    const auto                                              &q = node.frame;
     std::array<std::map<types::global_dof_index, double>, d> rows, rotated;
     for (unsigned int c = 0; c < d; ++c)
       for (auto e = A.begin(node.dofs[c]); e != A.end(node.dofs[c]); ++e)
@@ -168,7 +168,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::ofstream                    out = Testing::open_output();
+  std::ofstream                    out  = Testing::open_output();
   const MPI_Comm                   comm = MPI_COMM_WORLD;
 
   Triangulation<d> tria;
@@ -176,9 +176,9 @@ main(int argc, char **argv)
   DoFHandler<d> dh(tria);
   dh.distribute_dofs(FESystem<d>(FE_Q<d>(2), d));
   const types::global_dof_index n_dofs = dh.n_dofs();
-  const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
-  const unsigned int ranks = Utilities::MPI::n_mpi_processes(comm);
-  IndexSet           owned(n_dofs);
+  const unsigned int            rank   = Utilities::MPI::this_mpi_process(comm);
+  const unsigned int            ranks  = Utilities::MPI::n_mpi_processes(comm);
+  IndexSet                      owned(n_dofs);
   owned.add_range(rank * n_dofs / ranks, (rank + 1) * n_dofs / ranks);
 
   DynamicSparsityPattern dsp(n_dofs);
@@ -228,13 +228,13 @@ main(int argc, char **argv)
       x -= exact;
       const double error = x.l2_norm() / exact.l2_norm();
       out << name_of(constrained_rows_names(), rows)
-          << ": eliminated components "
-          << preconditioner.n_eliminated() << " (top-face nodes "
-          << constrained.size() << ", constrained components " << expected
+          << ": eliminated components " << preconditioner.n_eliminated()
+          << " (top-face nodes " << constrained.size()
+          << ", constrained components " << expected
           << "), error < 1e-8: " << Testing::yes_no(error < 1e-8)
           << ", GMRES iterations <= 2: "
           << Testing::yes_no(control.last_step() <= 2) << "\n";
-      std::cout << "iterations " << control.last_step() << ", error "
-                << error << std::endl;
+      std::cout << "iterations " << control.last_step() << ", error " << error
+                << std::endl;
     }
 }

@@ -29,9 +29,10 @@ namespace DuctileContact
   void
   LinearSolver::setup()
   {
-    context.rigid_body_modes = make_rigid_body_modes(
-      context.discretisation,
-      context.parameters.rigid_body_modes == RigidBodyModes::per_body);
+    context.rigid_body_modes =
+      make_rigid_body_modes(context.discretisation,
+                            context.parameters.rigid_body_modes ==
+                              RigidBodyModes::per_body);
     context.phase_field_modes = make_phase_field_modes(context.discretisation);
     // The DoFs changed: the monolithic copy is rebuilt on the next solve,
     // and so is the direct solver's analysis.

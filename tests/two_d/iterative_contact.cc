@@ -57,8 +57,7 @@ main(int argc, char **argv)
                                              "plastic_work",
                                              "fracture_energy",
                                              "contact1_dissipation"};
-  for (const std::string rows :
-       {"keep", "eliminate", "eliminate, per body"})
+  for (const std::string rows : {"keep", "eliminate", "eliminate, per body"})
     {
       const bool           per_body = rows.find("per body") != rows.npos;
       const Testing::Table t =

@@ -29,9 +29,10 @@ namespace DuctileContact
    *    add_couplings() for the sparsity pattern;
    *  - step: begin_step() (true when its couplings changed, so that the
    *    pattern is rebuilt), assemble() into the bulk targets at every
-   *    Newton iteration, add_constrained_rows() after a tangent, fault() when a
-   * state must not be accepted, outer_update() between Newton solves (e.g.
-   * Uzawa updates of the augmented Lagrangian), commit() on an accepted step;
+   *    Newton iteration, add_constrained_rows() after a tangent, fault()
+   *    when a state must not be accepted, outer_update() between Newton
+   *    solves (e.g. Uzawa updates of the augmented Lagrangian), commit() on
+   *    an accepted step;
    *  - account and output: dissipation() for the energy balance,
    *    add_columns() for the statistics, write_output();
    *  - checkpoint: committed_state() and restore_committed_state(), the
