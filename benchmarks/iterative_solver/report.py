@@ -46,7 +46,7 @@ lines = ["| case | r | variant | unknowns | Newton its | Krylov its per "
 runs = os.path.join(here, "runs")
 for case in force_columns:
     for refinement in range(6):
-        for variant in order:
+        for variant in order + [v + "-np2" for v in order]:
             run = os.path.join(runs, case, f"r{refinement}-{variant}")
             if os.path.exists(os.path.join(run, "screen.txt")):
                 lines.append(row(case, refinement, variant, run))

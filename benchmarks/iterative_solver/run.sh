@@ -8,7 +8,7 @@
 # Newton iterations, Krylov iterations per solve (mean and largest), linear
 # solve time per Newton iteration and the scene's last force, which must be
 # the same for every variant of a case and refinement.
-# Usage: [VARIANTS="v ..."] benchmarks/iterative_solver/run.sh [CASE...]
+# Usage: [VARIANTS="v ..."] [NP=n] benchmarks/iterative_solver/run.sh [CASE...]
 #   (default: all cases and variants)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -38,8 +38,12 @@ variants=(
   "gmres-amg-elim-pb:Type = gmres-amg|Constrained rows = eliminate|Rigid-body modes = per body"
 )
 selected=("$@")
-# VARIANTS="a b": only these variants (default: all).
+# VARIANTS="a b": only these variants (default: all); NP=n: on n ranks
+# (default 1; the runs are named ...-npn).
 only=(${VARIANTS:-})
+np=${NP:-1}
+suffix=""
+((np > 1)) && suffix="-np$np"
 
 for entry in "${cases[@]}"; do
   IFS=: read -r name scene end refinements extra <<< "$entry"
@@ -64,7 +68,7 @@ for entry in "${cases[@]}"; do
             $name == ductile_notch_2d ]]; then
         continue
       fi
-      out=$here/runs/$name/r$r-$variant
+      out=$here/runs/$name/r$r-$variant$suffix
       rm -rf "$out"
       mkdir -p "$out"
       args=(--set "Mesh/Global refinements = $r"
@@ -75,8 +79,8 @@ for entry in "${cases[@]}"; do
       for e in "${entries[@]}"; do [[ -n $e ]] && args+=(--set "$e"); done
       IFS='|' read -ra entries <<< "$settings"
       for e in "${entries[@]}"; do args+=(--set "Linear solver/$e"); done
-      echo "== $name r$r $variant"
-      (cd "$project_root" && mpirun -np 1 "$exe" "${args[@]}" \
+      echo "== $name r$r $variant$suffix"
+      (cd "$project_root" && mpirun -np "$np" "$exe" "${args[@]}" \
          "$project_root/prm/$scene.prm") > "$out/screen.txt" 2>&1 ||
         echo "   (failed: see $out/screen.txt)"
     done
