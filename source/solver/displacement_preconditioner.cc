@@ -65,10 +65,15 @@ namespace DuctileContact
     void
     rotate(Epetra_MultiVector &v, bool forward) const;
 
+    /// (node, component) of every DoF of @p nodes, by global number.
+    using NodeOfDof =
+      std::unordered_map<int, std::pair<unsigned int, unsigned int>>;
+
     /// Q A Q^T with A's pattern (an entry the pattern lacks is dropped).
     std::unique_ptr<Epetra_CrsMatrix>
     rotated_matrix(const Epetra_CrsMatrix &A,
-                   const ConstrainedNodes &nodes) const;
+                   const ConstrainedNodes &nodes,
+                   const NodeOfDof        &node_of) const;
 
     /// The owned nodes: their frames and row numbers (local).
     std::vector<const ConstrainedNode *> owned;
@@ -106,20 +111,21 @@ namespace DuctileContact
 
     // Which columns (and owned rows) are constrained components: the
     // first n_constrained of each node, in its frame.
-    std::unordered_map<int, bool> constrained_dof;
-    for (const ConstrainedNode &node : nodes)
-      for (unsigned int k = 0; k < node.dofs.size(); ++k)
-        constrained_dof[static_cast<int>(node.dofs[k])] =
-          k < node.n_constrained;
+    NodeOfDof node_of;
+    for (unsigned int m = 0; m < nodes.size(); ++m)
+      for (unsigned int k = 0; k < nodes[m].dofs.size(); ++k)
+        node_of[static_cast<int>(nodes[m].dofs[k])] = {m, k};
     const auto is_c = [&](const int gid) {
-      const auto it = constrained_dof.find(gid);
-      return it != constrained_dof.end() && it->second;
+      const auto it = node_of.find(gid);
+      return it != node_of.end() &&
+             it->second.second < nodes[it->second.first].n_constrained;
     };
     std::vector<bool> c_column(columns.NumMyElements());
     for (int l = 0; l < columns.NumMyElements(); ++l)
       c_column[l] = is_c(columns.GID(l));
 
-    std::unique_ptr<Epetra_CrsMatrix> rotated = rotated_matrix(A, nodes);
+    std::unique_ptr<Epetra_CrsMatrix> rotated =
+      rotated_matrix(A, nodes, node_of);
 
     pivots      = std::make_unique<Epetra_Vector>(rows);
     rest        = std::make_unique<Epetra_Vector>(rows);
@@ -197,20 +203,17 @@ namespace DuctileContact
   std::unique_ptr<Epetra_CrsMatrix>
   DisplacementPreconditioner::Elimination::rotated_matrix(
     const Epetra_CrsMatrix &A,
-    const ConstrainedNodes &nodes) const
+    const ConstrainedNodes &nodes,
+    const NodeOfDof        &node_of) const
   {
     auto              rotated = std::make_unique<Epetra_CrsMatrix>(A);
     const Epetra_Map &columns = A.ColMap();
     // A Q^T: in every row, the entries of a constrained node's columns
     // (its components, by local column) are turned into its frame.
-    std::unordered_map<int, std::pair<unsigned int, unsigned int>> by_gid;
-    for (unsigned int m = 0; m < nodes.size(); ++m)
-      for (unsigned int k = 0; k < nodes[m].dofs.size(); ++k)
-        by_gid[static_cast<int>(nodes[m].dofs[k])] = {m, k};
     std::vector<int> column_node(columns.NumMyElements(), -1),
       column_component(columns.NumMyElements(), 0);
     for (int l = 0; l < columns.NumMyElements(); ++l)
-      if (const auto it = by_gid.find(columns.GID(l)); it != by_gid.end())
+      if (const auto it = node_of.find(columns.GID(l)); it != node_of.end())
         {
           column_node[l]      = static_cast<int>(it->second.first);
           column_component[l] = static_cast<int>(it->second.second);
@@ -377,6 +380,9 @@ namespace DuctileContact
                        degree,
                        parameters.aggregation_threshold,
                        rotated.get());
+        rotated_rhs.reinit(A.locally_owned_range_indices(),
+                           A.get_mpi_communicator());
+        rest_rhs.reinit(rotated_rhs);
         return;
       }
     initialize_amg(
@@ -395,8 +401,9 @@ namespace DuctileContact
         amg.vmult(dst, src);
         return;
       }
-    TrilinosWrappers::MPI::Vector b(src), rest_rhs(src);
-    elimination->before(b.trilinos_vector(), rest_rhs.trilinos_vector());
+    rotated_rhs = src;
+    elimination->before(rotated_rhs.trilinos_vector(),
+                        rest_rhs.trilinos_vector());
     amg.vmult(dst, rest_rhs);
     elimination->after(dst.trilinos_vector());
   }

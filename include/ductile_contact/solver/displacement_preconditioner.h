@@ -67,5 +67,8 @@ namespace DuctileContact
     class Elimination;
     std::unique_ptr<Elimination>              elimination;
     dealii::TrilinosWrappers::PreconditionAMG amg;
+    /// vmult()'s work vectors with the elimination: Q r, and the
+    /// right-hand side of the AMG on S.
+    mutable dealii::TrilinosWrappers::MPI::Vector rotated_rhs, rest_rhs;
   };
 } // namespace DuctileContact
