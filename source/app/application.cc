@@ -115,7 +115,7 @@ namespace DuctileContact
 
     /// Throws InputError when the mesh after the global refinements cannot
     /// fit into the memory of the hosts of this run: a lower bound, the
-    /// tangent matrix alone (FE_Q(p): (2p + 1)^3 nodes couple with a node,
+    /// tangent matrix alone (FE_Q(p): (2p + 1)^dim nodes couple with a node,
     /// 12 bytes per entry), against MemTotal summed over the hosts.
     void
     check_memory(const RunParameters                             &parameters,
@@ -130,11 +130,12 @@ namespace DuctileContact
         }
       const double components = dim + (plastic ? 1 : 0) + (cracking ? 1 : 0);
       const double p          = parameters.fe_degree;
-      const double cells      = coarse.n_global_active_cells() *
-                           std::pow(8., parameters.mesh.global_refinements);
-      const double unknowns = cells * p * p * p * components;
+      const double cells =
+        coarse.n_global_active_cells() *
+        std::pow(std::pow(2., dim), parameters.mesh.global_refinements);
+      const double unknowns = cells * std::pow(p, dim) * components;
       const double bytes =
-        unknowns * std::pow(2. * p + 1., 3) * components * 12.;
+        unknowns * std::pow(2. * p + 1., dim) * components * 12.;
 
       // MemTotal of each host, counted once.
       double      host_memory = 0.;
