@@ -6,8 +6,10 @@
 #            output, the benchmarks)
 set -euo pipefail
 
-packages=(cmake make g++ libdeal.ii-dev libmumps-dev libmetis-dev openmpi-bin numdiff
-          libopenblas0-pthread python3)
+# libmumps-ptscotch-dev: MUMPS with PT-Scotch, its parallel analysis
+# (Linear solver/Ordering = pt-scotch); libmumps-dev's headers.
+packages=(cmake make g++ libdeal.ii-dev libmumps-dev libmumps-ptscotch-dev
+          libmetis-dev openmpi-bin numdiff libopenblas0-pthread python3)
 if [[ "${1:-}" == "--plots" ]]; then
   packages+=(python3-matplotlib time python3-vtk9 python3-h5py xvfb xauth)
 fi

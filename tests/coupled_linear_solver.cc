@@ -7,6 +7,8 @@
 // every pair of fields with different coefficients each way. For a known
 // x_exact, b = K x_exact; each solver must return x_exact to 1e-6 relative:
 //  - direct with KLU and MUMPS on the monolithic copy of the nine blocks,
+//    MUMPS with each ordering (PT-Scotch's in MUMPS's parallel analysis,
+//    which must run on all ranks on 2),
 //    also after the values change (the copied pattern is reused) and after
 //    setup() (the pattern is rebuilt); MUMPS with the factors of the last
 //    matrix through GMRES after a small change of the couplings (2 to 20
@@ -46,6 +48,7 @@
 #include "tests.h"
 
 #include <cmath>
+#include <sstream>
 
 using namespace dealii;
 using namespace DuctileContact;
@@ -237,6 +240,31 @@ namespace
             parameters.direct_solver = from_name(direct_solver_names(), direct);
             check(label + "direct " + direct, 0);
           }
+      // MUMPS's other orderings (the first layout only); PT-Scotch's in
+      // its parallel analysis, which must run on all ranks when there are
+      // several.
+      if (label.empty())
+        {
+          parameters.direct_solver = DirectSolver::mumps;
+          for (const std::string o : {"pt-scotch", "amd", "pord"})
+            {
+              parameters.ordering = from_name(direct_ordering_names(), o);
+              check("direct mumps, " + o + " ordering", 0);
+              if (o == "pt-scotch")
+                {
+                  std::ostringstream summary;
+                  solver.print_summary(summary);
+                  const bool parallel =
+                    summary.str().find("(1 on all ranks)") != std::string::npos;
+                  out << "    analysis on all ranks where there are several: "
+                      << Testing::yes_no(
+                           parallel ==
+                           (Utilities::MPI::n_mpi_processes(comm) > 1))
+                      << std::endl;
+                }
+            }
+          parameters.ordering = DirectOrdering::metis;
+        }
       // Single-precision factors through flexible GMRES; on the whole
       // layouts also with a tolerance GMRES cannot reach (below double
       // round-off): then double-precision factors.

@@ -28,7 +28,8 @@ def row(scene, variant, run):
     unknowns = find(r"DoFs: (\d+)", screen)
     memory = find(r"peak memory (\d+) KB", screen)
     memory = f"{int(memory) / 1024:.0f}" if memory != "-" else "-"
-    mumps = re.search(r"MUMPS \([^)]*\): (\d+) analyses [\d.e+-]+ s, (\d+) "
+    mumps = re.search(r"MUMPS \([^)]*\): (\d+) analyses "
+                      r"(?:\(\d+ on all ranks\) )?[\d.e+-]+ s, (\d+) "
                       r"factorisations ([\d.e+-]+) s, (\d+) solves", screen)
     work = (f"{mumps.group(1)} / {mumps.group(2)} / {mumps.group(4)}"
             if mumps else "-")

@@ -11,6 +11,7 @@
 #include <ductile_contact/app/stop_request.h>
 #include <ductile_contact/app/time_integrator.h>
 #include <ductile_contact/core/input_error.h>
+#include <ductile_contact/core/memory_use.h>
 #include <ductile_contact/coupled/coupled_problem.h>
 #include <ductile_contact/coupled/coupled_solver.h>
 #include <ductile_contact/output/progress_line.h>
@@ -241,7 +242,8 @@ namespace DuctileContact
           << "DoFs: " << discretisation->dof_handler.n_dofs() << " (u "
           << n[Block::displacement] << ", alpha " << n[Block::hardening]
           << ", s " << n[Block::phase_field] << "), FE_Q("
-          << parameters.fe_degree << ")" << std::endl;
+          << parameters.fe_degree << ")" << std::endl
+          << "Linear solver: " << linear_solver->describe() << std::endl;
   }
 
 
@@ -670,8 +672,7 @@ namespace DuctileContact
                         << ls.minimum_time_step;
                 pcout << " at t = " << t << ". Results up to this time are in '"
                       << parameters.output.directory << "'." << std::endl;
-                if (Utilities::MPI::this_mpi_process(comm) == 0)
-                  linear_solver->print_summary(pcout.get_stream());
+                print_resources();
                 return gave_up;
               }
             continue;
@@ -679,7 +680,8 @@ namespace DuctileContact
 
         if (adaptation && refinements < parameters.mesh.adaptive.maximum_passes)
           {
-            TrilinosWrappers::MPI::BlockVector trial = u;
+            TrilinosWrappers::MPI::BlockVector trial  = u;
+            const LinearSolverType             before = linear_solver->type();
             if (adapt_mesh(trial))
               {
                 ++refinements;
@@ -688,6 +690,9 @@ namespace DuctileContact
                       << triangulation.n_global_active_cells() << " cells, "
                       << discretisation->dof_handler.n_dofs()
                       << " DoFs; solving the step again" << std::endl;
+                if (linear_solver->type() != before)
+                  pcout << "  Linear solver: " << linear_solver->describe()
+                        << std::endl;
                 refined_trial = std::move(trial);
                 continue;
               }
@@ -742,8 +747,19 @@ namespace DuctileContact
             return stopped;
           }
       }
+    print_resources();
+    return finished;
+  }
+
+
+
+  void
+  Simulation::print_resources()
+  {
+    const MemoryUse memory = MemoryUse::peak(comm);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       linear_solver->print_summary(pcout.get_stream());
-    return finished;
+    pcout << "Memory: " << memory.describe(discretisation->dof_handler.n_dofs())
+          << std::endl;
   }
 } // namespace DuctileContact

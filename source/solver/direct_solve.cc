@@ -176,9 +176,10 @@ namespace DuctileContact
         << ", " << name_of(direct_ordering_names(), settings.ordering)
         << " ordering, "
         << name_of(factor_precision_names(), settings.precision)
-        << " precision): " << s.analyses << " analyses " << s.analysis_time
-        << " s, " << s.factorisations << " factorisations " << s.factor_time
-        << " s, " << s.solves << " solves " << s.solve_time << " s ("
+        << " precision): " << s.analyses << " analyses (" << s.parallel_analyses
+        << " on all ranks) " << s.analysis_time << " s, " << s.factorisations
+        << " factorisations " << s.factor_time << " s, " << s.solves
+        << " solves " << s.solve_time << " s ("
         << (s.solves > 0 ? s.bytes_sent / s.solves : 0.)
         << " bytes of solution sent per solve by this rank); "
         << s.factor_entries << " entries in the last factors; " << failed_reuses

@@ -50,8 +50,8 @@ namespace DuctileContact
   SolveStrategy &
   LinearSolver::strategy()
   {
-    const Discretisation &d = context.discretisation;
-    const bool direct = context.parameters.type == LinearSolverType::direct;
+    const Discretisation &d      = context.discretisation;
+    const bool            direct = type() == LinearSolverType::direct;
     if (d.dofs_per_block[Block::hardening] == 0 &&
         d.dofs_per_block[Block::phase_field] == 0)
       return direct ? static_cast<SolveStrategy &>(displacement_direct)
@@ -80,6 +80,30 @@ namespace DuctileContact
     context.direct.configure(DirectSolveSettings::of(context.parameters));
     context.constrained = constrained;
     return strategy().solve(K, x, b, accuracy, same_matrix);
+  }
+
+
+
+  LinearSolverType
+  LinearSolver::type() const
+  {
+    return context.parameters.resolved_type(
+      context.discretisation.dof_handler.n_dofs());
+  }
+
+
+
+  std::string
+  LinearSolver::describe() const
+  {
+    const std::string name = name_of(linear_solver_type_names(), type());
+    if (context.parameters.type != LinearSolverType::automatic)
+      return name;
+    const types::global_dof_index n =
+      context.discretisation.dof_handler.n_dofs();
+    return name + " (automatic: " + std::to_string(n) +
+           (type() == LinearSolverType::direct ? " <= " : " > ") +
+           std::to_string(context.parameters.direct_limit) + " unknowns)";
   }
 
 

@@ -85,6 +85,7 @@ namespace DuctileContact
         case DirectOrdering::pord:
           return 4;
         case DirectOrdering::automatic:
+        case DirectOrdering::pt_scotch: // ICNTL(29) chooses it
           return 7;
         }
       return 7;
@@ -104,6 +105,11 @@ namespace DuctileContact
           return "numerically singular matrix";
         case -13:
           return "memory allocation failed";
+        case -38:
+          return "Linear solver/Ordering = pt-scotch needs a MUMPS built "
+                 "with PT-Scotch (Debian: libmumps-ptscotch-dev, which "
+                 "scripts/install-deps.sh installs; then a fresh build "
+                 "directory); this one has none: choose Ordering = metis";
         default:
           return "see the MUMPS user guide, section 'Error diagnostics'";
         }
@@ -141,8 +147,12 @@ namespace DuctileContact
       icntl(id, 18) = 3;  // distributed triplets
       icntl(id, 20) = 10; // dense right-hand side, distributed (owned rows)
       icntl(id, 21) = 1;  // solution distributed as MUMPS holds it
-      icntl(id, 28) = 1;  // sequential analysis (the orderings we have)
-      icntl(id, 7)  = mumps_ordering(ordering);
+      // Parallel analysis with PT-Scotch (MUMPS falls back to a sequential
+      // one with Scotch on one rank), or sequential with the given order.
+      const bool parallel = ordering == DirectOrdering::pt_scotch;
+      icntl(id, 28)       = parallel ? 2 : 1;
+      icntl(id, 29)       = parallel ? 1 : 0;
+      icntl(id, 7)        = mumps_ordering(ordering);
       icntl(id, 14) = 30; // work space margin over the analysis' estimate, %
     });
   }
@@ -438,6 +448,10 @@ namespace DuctileContact
         run(1, "analysis");
         analysed = true;
         ++stats.analyses;
+        mumps->visit([&](auto &id) {
+          if (infog(id, 32) == 2)
+            ++stats.parallel_analyses;
+        });
         stats.analysis_time += timer.wall_time();
       }
 

@@ -323,13 +323,29 @@ namespace DuctileContact
       "Type",
       type,
       linear_solver_type_names(),
-      "direct: sparse factorisation (see Direct solver) of the whole "
-      "system; cg-amg: CG preconditioned by Trilinos ML AMG with the six "
+      "automatic: direct up to Direct solver limit unknowns, gmres-amg "
+      "above (decided at every solve, so a mesh that grows past the limit "
+      "switches). direct: sparse factorisation (see Direct solver) of the "
+      "whole system; cg-amg: CG preconditioned by Trilinos ML AMG with the six "
       "rigid-body modes; gmres-amg: GMRES with the same AMG (for "
       "non-symmetric tangents). With alpha or s unknowns the coupled tangent "
       "is not symmetric: cg-amg and gmres-amg then both run GMRES with a "
       "block lower-triangular (block Gauss-Seidel) preconditioner: this AMG "
       "on u, a scalar AMG on alpha, and on s the Phase-field preconditioner.");
+    prm.add_parameter(
+      "Direct solver limit",
+      direct_limit,
+      "Type = automatic: the largest number of unknowns (all fields, all "
+      "ranks) solved by the direct solver; above it gmres-amg. The default "
+      "depends on the dimension, from runs on 2 ranks of a 24 GB node "
+      "(benchmarks/iterative_solver): 3-D 500000 (the direct solver was "
+      "the faster one up to 444k unknowns, and at 1.03M its factors did "
+      "not fit into the node); plane strain 1000000 (the direct solver "
+      "was faster than the default gmres-amg at every size up to 520k, and "
+      "its 8.9 kB per unknown fit into the node to about 2M; an elastic "
+      "contact scene with Rigid-body modes = per body solves faster "
+      "iteratively from about 260k). Elsewhere, measure.",
+      Patterns::Integer(0));
     add_option(prm,
                "Direct solver",
                direct_solver,
@@ -346,9 +362,13 @@ namespace DuctileContact
                direct_ordering_names(),
                "Direct solver = mumps: fill-reducing ordering. metis: "
                "METIS nested dissection of the pattern, handed to MUMPS as "
-               "its pivot order; automatic: MUMPS's choice among those it "
-               "was built with (Debian: AMD, AMF, QAMD, PORD); amd, pord: "
-               "that one.");
+               "its pivot order (rank 0 gathers the pattern, orders it, and "
+               "MUMPS analyses it there); pt-scotch: PT-Scotch nested "
+               "dissection in MUMPS's parallel analysis, on all ranks (no "
+               "rank gathers the pattern; on one rank Scotch, sequential); "
+               "automatic: MUMPS's choice for a sequential analysis among "
+               "those it was built with (Debian: AMD, AMF, QAMD, PORD, "
+               "Scotch); amd, pord: that one.");
     add_option(prm,
                "Factorisation",
                factorisation,
@@ -477,5 +497,25 @@ namespace DuctileContact
                 "Linear solver/Relative tolerance",
                 Utilities::to_string(relative_tolerance),
                 "an iterative solver needs a positive tolerance");
+  }
+
+
+
+  LinearSolverType
+  LinearSolverParameters::resolved_type(
+    const types::global_dof_index n_unknowns) const
+  {
+    if (type != LinearSolverType::automatic)
+      return type;
+    return n_unknowns <= direct_limit ? LinearSolverType::direct
+                                      : LinearSolverType::gmres_amg;
+  }
+
+
+
+  unsigned int
+  LinearSolverParameters::default_direct_limit(const unsigned int dim)
+  {
+    return dim == 2 ? 1000000 : 500000;
   }
 } // namespace DuctileContact

@@ -63,7 +63,7 @@ namespace DuctileContact
     LoadSteppingParameters            load_stepping;
     NewtonParameters                  newton;
     CouplingParameters                coupling;
-    LinearSolverParameters            linear_solver;
+    LinearSolverParameters            linear_solver{dim};
     OutputParameters                  output;
     CheckpointParameters              checkpoint;
 

@@ -79,6 +79,10 @@ namespace DuctileContact
   private:
     void
     setup();
+    /// At the end of a run: the direct solver's work and the ranks' peak
+    /// memory (collective).
+    void
+    print_resources();
     /// Load stepping/Predictor: the first guess @p u of a step (the last
     /// accepted state on entry) moved along the last increment scaled by
     /// @p ratio (the ratio of the step sizes); returns the other first

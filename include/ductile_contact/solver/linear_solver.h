@@ -8,6 +8,7 @@
 #include <ductile_contact/solver/solver_parameters.h>
 
 #include <ostream>
+#include <string>
 #include <utility>
 
 namespace DuctileContact
@@ -16,12 +17,14 @@ namespace DuctileContact
    * Solves the Newton system K delta = b by the strategy that the `Linear
    * solver` section and the blocks ask for:
    *
-   * | blocks with DoFs | Type = direct            | cg-amg, gmres-amg       |
+   * | blocks with DoFs | direct                   | cg-amg, gmres-amg       |
    * |------------------|--------------------------|-------------------------|
    * | u only           | DisplacementDirectSolve  | DisplacementKrylovSolve |
    * | u, alpha and/or s| CoupledDirectSolve       | CoupledKrylovSolve      |
    *
    * (cg-amg on the coupled system is GMRES: its tangent is not symmetric).
+   * Type = automatic is direct up to Direct solver limit unknowns and
+   * gmres-amg above, decided at every solve.
    * The strategies share one SolveContext: the near-null spaces of the AMGs
    * and one DirectSolve, whose analysis and factors carry over from solve
    * to solve.
@@ -51,6 +54,15 @@ namespace DuctileContact
           const SolveAccuracy                               &accuracy = {},
           bool                    same_matrix                         = false,
           const ConstrainedNodes *constrained = nullptr);
+
+    /// The type that solves the current system: Type, or what automatic
+    /// picks for the current number of unknowns.
+    LinearSolverType
+    type() const;
+
+    /// The type with the reason for an automatic choice, for the log.
+    std::string
+    describe() const;
 
     /// One line on the direct solver's work so far (analyses,
     /// factorisations, solves and their times), if it kept any.

@@ -18,9 +18,11 @@ namespace DuctileContact
    * owned entry; right-hand side and solution distributed: each rank hands
    * over its owned rows, MUMPS returns the solution rows it holds, and one
    * all-to-all exchange brings them to their owners, so that no rank holds
-   * a global vector. The analysis is sequential (Debian's MUMPS has no
-   * parallel ordering): with the METIS ordering, rank 0 gathers the
-   * pattern once per analysis).
+   * a global vector). The analysis is MUMPS's parallel one with the
+   * PT-Scotch ordering (DirectOrdering::pt_scotch, on two or more ranks:
+   * no rank gathers the pattern), sequential otherwise: with the METIS
+   * ordering, rank 0 gathers the pattern once per analysis, computes the
+   * order and MUMPS analyses there.
    *
    * The analysis (ordering and symbolic factorisation) depends only on the
    * sparsity pattern; it is done when factorize() sees a pattern other than
@@ -39,12 +41,14 @@ namespace DuctileContact
     /// Time and count of each phase since construction.
     struct Statistics
     {
-      unsigned int analyses       = 0;
-      unsigned int factorisations = 0;
-      unsigned int solves         = 0;
-      double       analysis_time  = 0.;
-      double       factor_time    = 0.;
-      double       solve_time     = 0.;
+      unsigned int analyses = 0;
+      /// Of these, the ones MUMPS did on all ranks (INFOG(32) = 2).
+      unsigned int parallel_analyses = 0;
+      unsigned int factorisations    = 0;
+      unsigned int solves            = 0;
+      double       analysis_time     = 0.;
+      double       factor_time       = 0.;
+      double       solve_time        = 0.;
       /// Entries of the factors (MUMPS INFOG(29)) of the last one.
       double factor_entries = 0.;
       /// Bytes of solution entries this rank sent to other ranks.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
 
 #include <ductile_contact/core/option.h>
 
@@ -169,6 +170,8 @@ namespace DuctileContact
   /// Linear solver/Type.
   enum class LinearSolverType
   {
+    /// direct up to Direct solver limit unknowns, gmres_amg above.
+    automatic,
     direct,
     cg_amg,
     gmres_amg
@@ -178,6 +181,7 @@ namespace DuctileContact
   linear_solver_type_names()
   {
     static const NameTable<LinearSolverType> t{
+      {LinearSolverType::automatic, "automatic"},
       {LinearSolverType::direct, "direct"},
       {LinearSolverType::cg_amg, "cg-amg"},
       {LinearSolverType::gmres_amg, "gmres-amg"}};
@@ -215,7 +219,10 @@ namespace DuctileContact
     /// MUMPS's own choice among the orderings it was built with.
     automatic,
     amd,
-    pord
+    pord,
+    /// PT-Scotch nested dissection computed by MUMPS on all ranks (its
+    /// parallel analysis: no rank gathers the pattern; on one rank Scotch).
+    pt_scotch
   };
 
   /// Linear solver/Factorisation: how the matrix is factorised.
@@ -231,11 +238,12 @@ namespace DuctileContact
   inline const NameTable<DirectOrdering> &
   direct_ordering_names()
   {
-    static const NameTable<DirectOrdering> t{{DirectOrdering::metis, "metis"},
-                                             {DirectOrdering::automatic,
-                                              "automatic"},
-                                             {DirectOrdering::amd, "amd"},
-                                             {DirectOrdering::pord, "pord"}};
+    static const NameTable<DirectOrdering> t{
+      {DirectOrdering::metis, "metis"},
+      {DirectOrdering::automatic, "automatic"},
+      {DirectOrdering::amd, "amd"},
+      {DirectOrdering::pord, "pord"},
+      {DirectOrdering::pt_scotch, "pt-scotch"}};
     return t;
   }
 
@@ -332,10 +340,19 @@ namespace DuctileContact
 
   struct LinearSolverParameters
   {
-    LinearSolverType type          = LinearSolverType::direct;
-    DirectSolver     direct_solver = DirectSolver::mumps;
-    DirectOrdering   ordering      = DirectOrdering::metis;
-    Factorisation    factorisation = Factorisation::lu;
+    /// The defaults of a scene in @p dim dimensions.
+    explicit LinearSolverParameters(unsigned int dim = 3)
+        : direct_limit(default_direct_limit(dim))
+    {
+    }
+
+    LinearSolverType type = LinearSolverType::automatic;
+    /// Type = automatic: the most unknowns solved by the direct solver
+    /// (see declare()).
+    unsigned int   direct_limit;
+    DirectSolver   direct_solver = DirectSolver::mumps;
+    DirectOrdering ordering      = DirectOrdering::metis;
+    Factorisation  factorisation = Factorisation::lu;
     /// Single-precision factors: as fast or faster in every shipped scene
     /// on the direct solver (sent_coarse -17 %, two_bodies -10 %; the same
     /// Newton iterations and answers, benchmarks/performance/results.md).
@@ -358,6 +375,18 @@ namespace DuctileContact
     ConstrainedRows constrained_rows = ConstrainedRows::keep;
     /// whole mesh | per body: the displacement AMG's near-null space.
     RigidBodyModes rigid_body_modes = RigidBodyModes::whole_mesh;
+
+    /// The type that solves a system of @p n_unknowns: @p type itself
+    /// unless it is automatic.
+    LinearSolverType
+    resolved_type(dealii::types::global_dof_index n_unknowns) const;
+
+    /// Direct solver limit's default in @p dim dimensions: the size above
+    /// which the iterative solver is measured faster on this project's
+    /// scenes, or the direct solver's factors outgrow a 24 GB node
+    /// (benchmarks/iterative_solver).
+    static unsigned int
+    default_direct_limit(unsigned int dim);
 
     void
     declare(dealii::ParameterHandler &prm);
