@@ -13,7 +13,8 @@ from runs_io import find, read_statistics, wall_time  # noqa: E402
 
 force_columns = {"strip_elastic": "F2_y", "strip": "F2_y",
                  "ductile_notch_2d": "F2_y", "hertz_cylinder_2d": "F2_y",
-                 "two_bodies": "F2_z"}
+                 "two_bodies": "F2_z", "two_bodies_k3": "F2_z",
+                 "two_bodies_k4": "F2_z"}
 order = ["direct", "gmres-amg", "gmres-amg-sgs", "gmres-amg-sgs-r400",
          "gmres-amg-pf-direct", "gmres-amg-elim", "gmres-amg-pb",
          "gmres-amg-sgs-pb", "gmres-amg-sgs-r400-pb", "gmres-amg-pf-direct-pb",

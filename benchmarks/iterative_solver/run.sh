@@ -8,8 +8,9 @@
 # Newton iterations, Krylov iterations per solve (mean and largest), linear
 # solve time per Newton iteration and the scene's last force, which must be
 # the same for every variant of a case and refinement.
-# Usage: [VARIANTS="v ..."] [NP=n] benchmarks/iterative_solver/run.sh [CASE...]
-#   (default: all cases and variants)
+# Usage: [VARIANTS="v ..."] [NP=n] [REFINEMENTS="r ..."]
+#        benchmarks/iterative_solver/run.sh [CASE...]
+#   (default: all cases, variants and each case's refinements)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../scripts/env.sh"
@@ -22,6 +23,8 @@ cases=(
   "ductile_notch_2d:ductile_notch_2d:0.04:0 1 2:"
   "hertz_cylinder_2d:hertz_cylinder_2d:0.5:0:"
   "two_bodies:two_bodies:3:0 1:"
+  "two_bodies_k3:two_bodies:3:0:Mesh/Two bodies/Plate subdivisions = 57, 39, 6|Mesh/Two bodies/Block subdivisions = 15, 15, 15"
+  "two_bodies_k4:two_bodies:3:0:Mesh/Two bodies/Plate subdivisions = 76, 52, 8|Mesh/Two bodies/Block subdivisions = 20, 20, 20"
 )
 # variant : Linear solver entries ('|' separates)
 variants=(
@@ -50,7 +53,7 @@ for entry in "${cases[@]}"; do
   if ((${#selected[@]})) && [[ ! " ${selected[*]} " == *" $name "* ]]; then
     continue
   fi
-  for r in $refinements; do
+  for r in ${REFINEMENTS:-$refinements}; do
     for v in "${variants[@]}"; do
       variant=${v%%:*}
       settings=${v#*:}
@@ -59,7 +62,7 @@ for entry in "${cases[@]}"; do
       fi
       # The phase-field preconditioners only differ with s unknowns.
       if [[ $variant == gmres-amg-pf-direct* && ( $name == strip_elastic ||
-            $name == hertz_cylinder_2d || $name == two_bodies ) ]]; then
+            $name == hertz_cylinder_2d || $name == two_bodies* ) ]]; then
         continue
       fi
       # Constraint rows come from contact only, and one body has one set
