@@ -66,9 +66,9 @@ end
          {"F2_y", "external_work", "contact1_dissipation"})
       for (std::size_t k = 1; k < direct.at(c).size(); ++k)
         {
-          const double scale = c == std::string("F2_y") ?
-                                 std::abs(direct.at(c)[k]) :
-                                 direct.at("external_work")[k];
+          const double scale = c == std::string("F2_y")
+                                 ? std::abs(direct.at(c)[k])
+                                 : direct.at("external_work")[k];
           worst =
             std::max(worst, std::abs(t.at(c)[k] - direct.at(c)[k]) / scale);
         }
@@ -100,14 +100,13 @@ main(int argc, char **argv)
       std::ostringstream   log;
       const Testing::Table t =
         run("  set Type = automatic\n" +
-              (limit.empty() ? std::string() :
-                               "  set Direct solver limit = " + limit + "\n"),
+              (limit.empty() ? std::string()
+                             : "  set Direct solver limit = " + limit + "\n"),
             "automatic" + limit,
             log);
       const double worst = worst_difference(t, direct);
-      out << "automatic, limit " << (limit.empty() ? "default" : limit)
-          << ": " << chosen(log.str())
-          << "; every step as Type = direct to 1e-6: "
+      out << "automatic, limit " << (limit.empty() ? "default" : limit) << ": "
+          << chosen(log.str()) << "; every step as Type = direct to 1e-6: "
           << Testing::yes_no(worst < 1e-6) << "\n";
       std::cout << "limit " << limit << ": worst relative difference " << worst
                 << std::endl;

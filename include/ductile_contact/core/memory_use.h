@@ -3,7 +3,6 @@
 #include <deal.II/base/types.h>
 
 #include <mpi.h>
-
 #include <string>
 
 namespace DuctileContact
