@@ -488,6 +488,34 @@ end
   }
 
   /**
+   * Largest difference of run @p t from run @p reference at every step
+   * after the first: the column @p force relative to its own value at that
+   * step, each column of @p energies relative to the reference's W_ext
+   * there; 1 when the runs have different numbers of steps.
+   */
+  inline double
+  stepwise_difference(const Table                    &t,
+                      const Table                    &reference,
+                      const std::string              &force,
+                      const std::vector<std::string> &energies)
+  {
+    if (t.at("time").size() != reference.at("time").size())
+      return 1.;
+    double worst = 0.;
+    for (std::size_t k = 1; k < reference.at("time").size(); ++k)
+      {
+        worst = std::max(worst,
+                         std::abs(t.at(force)[k] - reference.at(force)[k]) /
+                           std::abs(reference.at(force)[k]));
+        for (const std::string &c : energies)
+          worst = std::max(worst,
+                           std::abs(t.at(c)[k] - reference.at(c)[k]) /
+                             reference.at("external_work")[k]);
+      }
+    return worst;
+  }
+
+  /**
    * .prm text of the coarse copy of the paper's scene (@p scene, a file of
    * prm/, on plate 8 x 5 x 1 and block 2 x 2 x 2 cells, 16 steps of 0.6 mm
    * to 9.6 mm, no field output) used by block_on_plate,

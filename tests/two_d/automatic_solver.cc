@@ -54,26 +54,6 @@ end
     return log.substr(begin + key.size(), end - begin - key.size());
   }
 
-  /// Largest difference of @p t from @p direct: the force against itself,
-  /// the energies against W_ext.
-  double
-  worst_difference(const Testing::Table &t, const Testing::Table &direct)
-  {
-    if (t.at("time").size() != direct.at("time").size())
-      return 1.;
-    double worst = 0.;
-    for (const std::string c :
-         {"F2_y", "external_work", "contact1_dissipation"})
-      for (std::size_t k = 1; k < direct.at(c).size(); ++k)
-        {
-          const double scale = c == std::string("F2_y")
-                                 ? std::abs(direct.at(c)[k])
-                                 : direct.at("external_work")[k];
-          worst =
-            std::max(worst, std::abs(t.at(c)[k] - direct.at(c)[k]) / scale);
-        }
-    return worst;
-  }
 } // namespace
 
 int
@@ -104,7 +84,8 @@ main(int argc, char **argv)
                              : "  set Direct solver limit = " + limit + "\n"),
             "automatic" + limit,
             log);
-      const double worst = worst_difference(t, direct);
+      const double worst = Testing::stepwise_difference(
+        t, direct, "F2_y", {"external_work", "contact1_dissipation"});
       out << "automatic, limit " << (limit.empty() ? "default" : limit) << ": "
           << chosen(log.str()) << "; every step as Type = direct to 1e-6: "
           << Testing::yes_no(worst < 1e-6) << "\n";
