@@ -115,17 +115,24 @@ namespace DuctileContact
     const Pair                                   &pair,
     const std::vector<std::vector<unsigned int>> &near)
   {
+    // A slave face is integrated whole or not at all: once one of its
+    // candidates is within reach, against every candidate. Integrated
+    // against the near ones only, the reach would cut the face where it is
+    // about reach() from the master, and a node left with a sliver of its
+    // support gets a weighted gap of either sign (the dual basis functions
+    // change sign on a face): a node millimetres from the master could
+    // turn active in one iterate and inactive in the next as the cut moved
+    // (semi-smooth Newton then cycled between the two states).
     std::vector<std::pair<unsigned int, unsigned int>> close;
     for (unsigned int f = 0; f < pair.slave.faces.size(); ++f)
       {
-        // Both lists are sorted.
-        std::vector<unsigned int> both;
-        std::set_intersection(near[f].begin(),
-                              near[f].end(),
-                              pair.candidates[f].begin(),
-                              pair.candidates[f].end(),
-                              std::back_inserter(both));
-        for (const unsigned int c : both)
+        const auto &candidates = pair.candidates[f];
+        if (std::find_first_of(near[f].begin(),
+                               near[f].end(),
+                               candidates.begin(),
+                               candidates.end()) == near[f].end())
+          continue;
+        for (const unsigned int c : candidates)
           close.emplace_back(f, c);
       }
     return close;

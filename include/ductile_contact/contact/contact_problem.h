@@ -323,8 +323,10 @@ namespace DuctileContact
     static double
     search_radius(const Pair &pair);
 
-    /// The candidate face pairs of @p pair among @p near (search() with
-    /// reach() on the current geometry), by slave face.
+    /// The face pairs of @p pair to integrate, by slave face: every
+    /// candidate of each slave face that has a candidate among @p near
+    /// (search() with reach() on the current geometry), so that a slave
+    /// face is integrated whole or not at all.
     static std::vector<std::pair<unsigned int, unsigned int>>
     close_face_pairs(const Pair                                   &pair,
                      const std::vector<std::vector<unsigned int>> &near);
