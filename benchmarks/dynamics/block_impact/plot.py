@@ -28,7 +28,8 @@ def dt_of(run):
 
 
 runs = sorted((r for r in (here / "runs").glob(f"v{speed}_dt*")
-               if (r / "statistics").exists() and r.name.endswith("_2d") == two_d),
+               if (r / "statistics").exists() and r.name.endswith("_2d") == two_d
+               and not r.name.endswith("_bound")),
               key=lambda r: -dt_of(r))
 if not runs:
     sys.exit(f"no runs at {speed} m/s")

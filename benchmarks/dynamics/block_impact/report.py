@@ -13,9 +13,9 @@ def table(path):
 
 
 def key(run):
-    """(speed, dt, plane strain) from runs/v<speed>_dt<dt>[_2d]."""
-    m = re.match(r"v([0-9.]+)_dt([0-9.e-]+?)(_2d)?$", run.name)
-    return float(m.group(1)), float(m.group(2)), m.group(3) is not None
+    """(speed, dt, plane strain, options) from runs/v<speed>_dt<dt>[_2d][_bound]."""
+    m = re.match(r"v([0-9.]+)_dt([0-9.e-]+?)(_2d)?(_bound)?$", run.name)
+    return float(m.group(1)), float(m.group(2)), m.group(3) is not None, m.group(4) or ""
 
 
 def revision(run):
@@ -50,12 +50,13 @@ lines = ["# The paper's scene as an impact", "",
          "clamp), its worst the largest magnitude over the steps. Values at the end (1 ms); the "
          "largest α and s over the run (at the quadrature points).", ""]
 runs = [r for r in (here / "runs").glob("v*_dt*") if finished(r)]
-for speed, two_d in sorted({(key(r)[0], key(r)[2]) for r in runs}):
-    group = sorted((r for r in runs if key(r)[0] == speed and key(r)[2] == two_d),
-                   key=lambda r: -key(r)[1])
+for speed, two_d, options in sorted({(key(r)[0], key(r)[2], key(r)[3]) for r in runs}):
+    group = sorted((r for r in runs if key(r)[0] == speed and key(r)[2] == two_d
+                    and key(r)[3] == options), key=lambda r: -key(r)[1])
     data = {r: table(r / "statistics") for r in group}
     finest = data[group[-1]]
-    lines += [f"## {speed:g} m/s" + (", plane strain" if two_d else ""), "",
+    lines += [f"## {speed:g} m/s" + (", plane strain" if two_d else "")
+              + (", Loading condition = bound and Bernstein α" if options else ""), "",
               "| dt [µs] | commit | end time [ms] | K₀ [J] | residual / K₀ | worst / K₀ | "
               + " | ".join(q[1] for q in QOIS)
               + " | min D_p,loc | Newton iterations | cut-backs | wall [s] |",
