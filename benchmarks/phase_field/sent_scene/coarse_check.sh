@@ -16,7 +16,7 @@ for mode in "history and bound" "history"; do
       -e "s|set Irreversibility = .*|set Irreversibility = $mode|" "$here/coarse_check.prm"
     printf 'subsection Output\n  set Directory = %s\nend\n' "$dir"; } > "$dir/scene.prm"
   mpirun -np 1 "$exe" "$dir/scene.prm" > "$dir/screen.txt" 2>&1
-  echo "== $mode: $(grep -c 'bound s >= s_n is engaged' "$dir/screen.txt") steps engaged the bound"
+  echo "== $mode: $(grep -c 'its bound is engaged' "$dir/screen.txt") steps engaged the bound"
   /usr/bin/python3 - "$dir/statistics" <<'PY'
 import sys
 sys.path.insert(0, sys.argv[1].rsplit("/benchmarks/", 1)[0] + "/benchmarks")
