@@ -65,3 +65,34 @@ for solver in ("direct", "gmres-amg"):
     lines.append(f"| {solver} | " + " | ".join(cells) + " |")
 (here / "results.md").write_text("\n".join(lines) + "\n")
 print("\n".join(lines))
+
+# speed.png: time per Newton iteration against the ranks, strong (the same
+# mesh) and weak (twice the unknowns on twice the ranks), with the ideal lines.
+try:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+except ImportError:
+    raise SystemExit("matplotlib missing: no plot")
+fig, axes = plt.subplots(1, 2, figsize=(9, 3.8))
+for solver, colour in (("direct", "C0"), ("gmres-amg", "C1")):
+    a, b = rows.get(("r1x1", solver, 1)), rows.get(("r1x1", solver, 2))
+    if a and b:
+        axes[0].plot([1, 2], [a["per_it"], b["per_it"]], "o-", color=colour, label=solver)
+        axes[0].plot([1, 2], [a["per_it"], a["per_it"] / 2], ":", color=colour)
+    for small, big, style in (("r0x1", "r0x2", "s--"), ("r1x1", "r1x2", "o-")):
+        a, b = rows.get((small, solver, 1)), rows.get((big, solver, 2))
+        if a and b:
+            axes[1].plot([1, 2], [a["per_it"], b["per_it"]], style, color=colour,
+                         label=f"{solver}, {round(a['n'] / 1000)}k per rank")
+            axes[1].plot([1, 2], [a["per_it"], a["per_it"]], ":", color=colour)
+axes[0].set_title("strong: 138k unknowns (dotted: ideal)")
+axes[1].set_title("weak: unknowns per rank fixed (dotted: ideal)")
+for ax in axes:
+    ax.set_xticks([1, 2])
+    ax.set_xlabel("ranks")
+    ax.set_ylabel("s per Newton iteration")
+    ax.set_yscale("log")
+    ax.legend(fontsize=7)
+fig.tight_layout()
+fig.savefig(here / "speed.png", dpi=120)
