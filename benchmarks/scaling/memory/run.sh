@@ -10,6 +10,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
+source "$here/../two_bodies_cases.sh"
 require_build
 
 # case : ranks : extra entries ('|' separates)
@@ -19,27 +20,5 @@ cases=(
   "k3:2:Mesh/Two bodies/Plate subdivisions = 57, 39, 6|Mesh/Two bodies/Block subdivisions = 15, 15, 15"
 )
 solvers=(direct gmres-amg)
-selected=("$@")
-for entry in "${cases[@]}"; do
-  IFS=: read -r name ranks extra <<< "$entry"
-  if ((${#selected[@]})) && [[ ! " ${selected[*]} " == *" $name "* ]]; then
-    continue
-  fi
-  for np in ${NP:-$ranks}; do
-    for solver in "${solvers[@]}"; do
-      out=$here/runs/$name-$solver-np$np
-      rm -rf "$out"
-      mkdir -p "$out"
-      args=(--set "Load stepping/End time = 3"
-            --set "Linear solver/Type = $solver"
-            --set "Output/Directory = $out" --set "Output/Interval = 0")
-      IFS='|' read -ra entries <<< "$extra"
-      for e in "${entries[@]}"; do args+=(--set "$e"); done
-      echo "== $name $solver on $np rank(s)"
-      (cd "$project_root" && mpirun -np "$np" "$exe" "${args[@]}" \
-         "$project_root/prm/two_bodies.prm") > "$out/screen.txt" 2>&1 ||
-        echo "   (failed: see $out/screen.txt)"
-    done
-  done
-done
+run_two_bodies_cases "$here" again "$@"
 python3 "$here/report.py"

@@ -7,10 +7,11 @@
 # from the mesh refined once (138k on 1 rank, 2x on 2 ranks). report.py:
 # results.md with the time per Newton iteration of steps 2 and 3 (no
 # set-up) and the efficiencies. Run on the quiet machine (about 15 minutes).
-# Usage: benchmarks/scaling/speed/run.sh [CASE...]
+# Usage: [NP="1 2"] benchmarks/scaling/speed/run.sh [CASE...]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
+source "$here/../two_bodies_cases.sh"
 require_build
 
 plate=(19 13 2) block=(5 5 5)
@@ -25,31 +26,5 @@ cases=(
   "r1x2:2:$(mesh 1 2)"
 )
 solvers=(direct gmres-amg)
-selected=("$@")
-for entry in "${cases[@]}"; do
-  IFS=: read -r name ranks extra <<< "$entry"
-  if ((${#selected[@]})) && [[ ! " ${selected[*]} " == *" $name "* ]]; then
-    continue
-  fi
-  for np in $ranks; do
-    for solver in "${solvers[@]}"; do
-      out=$here/runs/$name-$solver-np$np
-      if run_finished "$out"; then
-        echo "== $name $solver on $np rank(s) (done)"
-        continue
-      fi
-      rm -rf "$out"
-      mkdir -p "$out"
-      args=(--set "Load stepping/End time = 3"
-            --set "Linear solver/Type = $solver"
-            --set "Output/Directory = $out" --set "Output/Interval = 0")
-      IFS='|' read -ra entries <<< "$extra"
-      for e in "${entries[@]}"; do args+=(--set "$e"); done
-      echo "== $name $solver on $np rank(s)"
-      (cd "$project_root" && mpirun -np "$np" "$exe" "${args[@]}" \
-         "$project_root/prm/two_bodies.prm") > "$out/screen.txt" 2>&1 ||
-        echo "   (failed: see $out/screen.txt)"
-    done
-  done
-done
+run_two_bodies_cases "$here" keep "$@"
 /usr/bin/python3 "$here/report.py"
