@@ -4,7 +4,8 @@
 // phase field and loading condition 'bound'), two_d/block_on_strip_tearing.cc
 // (plane strain, the Lagrange phase field, the pointwise switch) and
 // two_d/block_on_strip_tearing_bound.cc (plane strain, the bound, Bernstein
-// alpha and s): see their headers.
+// alpha and s): see their headers. two_d/impact_release.cc takes the tearing
+// scene's plasticity entries from here too.
 #include "tests.h"
 
 #include <algorithm>
@@ -42,6 +43,19 @@ namespace Testing
     /// quadrature points is checked too.
     bool alpha_bernstein = false;
   };
+
+  /// The plasticity of prm/block_on_plate_tearing.prm for body 0:
+  /// Loading condition = bound, alpha in the Bernstein basis.
+  inline const std::string plastic_bound_entries = R"(
+subsection Finite elements
+  set Hardening basis = Bernstein
+end
+subsection Body 0
+  subsection Plasticity
+    set Loading condition = bound
+  end
+end
+)";
 
   /// The round-off of the local plastic dissipation [J/m^3]: that of the
   /// elastic energy, 1e-14 mu of the plates of these scenes (mu = 26.455

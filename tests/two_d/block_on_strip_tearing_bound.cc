@@ -24,14 +24,8 @@ namespace
   const std::string bound_entries = R"(
 subsection Finite elements
   set Phase-field basis = Bernstein
-  set Hardening basis   = Bernstein
 end
-subsection Body 0
-  subsection Plasticity
-    set Loading condition = bound
-  end
-end
-)";
+)" + Testing::plastic_bound_entries;
 
   /// D_p at the end and the smallest local plastic dissipation of the run.
   std::pair<double, double>

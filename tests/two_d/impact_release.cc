@@ -19,7 +19,7 @@
 //    quadrature point.
 // The quantities of interest at 0.3 ms at 5 significant digits: K, W_p,
 // the frictional dissipation, max s.
-#include "../tests.h"
+#include "../tearing_check.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,15 +33,7 @@ main(int argc, char **argv)
   std::ofstream                    out = Testing::open_output();
 
   const std::string prm = Testing::shipped_scene("block_impact_2d.prm") +
-                          R"(
-subsection Finite elements
-  set Hardening basis = Bernstein
-end
-subsection Body 0
-  subsection Plasticity
-    set Loading condition = bound
-  end
-end
+                          Testing::plastic_bound_entries + R"(
 subsection Body 1
   set Initial velocity = 0; -250
 end
