@@ -1,5 +1,6 @@
 #include <ductile_contact/materials/body_material.h>
 #include <ductile_contact/materials/degraded_elasticity.h>
+#include <ductile_contact/materials/linear_elasticity.h>
 #include <ductile_contact/materials/neo_hooke.h>
 
 namespace DuctileContact
@@ -25,6 +26,17 @@ namespace DuctileContact
                             body.material(),
                             with_tangent,
                             frozen_yielding);
+    if (body.elastic_law == ElasticLaw::linear)
+      // Intact: s = 0 and the whole energy drives a crack.
+      return degraded_linear_elasticity(F,
+                                        body.fracture ? s : 0.,
+                                        body.shear_modulus,
+                                        body.bulk_modulus,
+                                        {body.crack.degradation_a,
+                                         body.crack.residual_stiffness},
+                                        body.fracture ? body.crack.split
+                                                      : EnergySplit::none,
+                                        with_tangent);
     if (body.fracture)
       return degraded_neo_hooke(F,
                                 s,

@@ -41,18 +41,28 @@ namespace DuctileContact
                       name,
                       "A name for the body, used on screen and in output.",
                       Patterns::Anything());
-    prm.add_parameter(
-      "Shear modulus",
-      shear_modulus,
-      "Shear modulus mu of the neo-Hooke law, doc/model.md (16) "
-      "[Pa].",
-      Patterns::Double(0.));
+    prm.add_parameter("Shear modulus",
+                      shear_modulus,
+                      "Shear modulus mu of the elastic law, doc/model.md (16) "
+                      "[Pa].",
+                      Patterns::Double(0.));
     prm.add_parameter(
       "Bulk modulus",
       bulk_modulus,
-      "Bulk modulus kappa of the neo-Hooke law, doc/model.md (16) "
+      "Bulk modulus kappa of the elastic law, doc/model.md (16) "
       "[Pa].",
       Patterns::Double(0.));
+    add_option(prm,
+               "Elastic law",
+               elastic_law,
+               elastic_law_names(),
+               "'neo-Hooke' is the compressible neo-Hooke law of "
+               "doc/model.md (16) at finite strain; 'linear' is small-strain "
+               "linear elasticity, psi = kappa/2 (tr eps)^2 + mu |dev eps|^2 "
+               "with eps = sym(F) - I (section 2.1), not frame-indifferent: "
+               "for comparisons with codes at small strain, in bodies "
+               "without plasticity. Fracture/Energy split applies to "
+               "both.");
     prm.add_parameter(
       "Density",
       density,
@@ -197,8 +207,11 @@ namespace DuctileContact
                "the volumetric one only in expansion (J > 1), so that a "
                "crack cannot interpenetrate; 'none' degrades the whole "
                "energy, in compression too (for comparisons with codes "
-               "without a split). Bodies with plasticity always use the "
-               "split.");
+               "without a split); 'spectral' (Elastic law = linear only) "
+               "degrades lambda/2 <tr eps>_+^2 + mu |eps_+|^2, the energy "
+               "of a positive trace and of the positive principal strains "
+               "(Miehe et al. 2010, doc/model.md section 2.1). Bodies with "
+               "plasticity always use 'volumetric-deviatoric'.");
     prm.add_parameter("Viscosity",
                       crack.viscosity,
                       "eta_f of (51) [J/m^3 times pseudo time]; 0 gives the "
@@ -330,6 +343,11 @@ namespace DuctileContact
                     value(plastic.saturation_yield),
                     "it must be at least the initial yield stress " +
                       value(plastic.initial_yield));
+        check_input(elastic_law == ElasticLaw::neo_hooke,
+                    prefix + "Elastic law",
+                    name_of(elastic_law_names(), elastic_law),
+                    "a body with plasticity uses 'neo-Hooke' (F = Fe Fp is "
+                    "a finite-strain model)");
         check_input(plastic.viscosity > 0.,
                     p + "Viscosity",
                     value(plastic.viscosity),
@@ -366,6 +384,12 @@ namespace DuctileContact
                     name_of(energy_split_names(), crack.split),
                     "a body with plasticity uses the split "
                     "'volumetric-deviatoric' of its elastic energy");
+        check_input(crack.split != EnergySplit::spectral ||
+                      elastic_law == ElasticLaw::linear,
+                    f + "Energy split",
+                    name_of(energy_split_names(), crack.split),
+                    "'spectral' is a split of the small strain: it needs " +
+                      prefix + "Elastic law = linear");
         check_input(plasticity || crack.driver == CrackDriverType::elastic,
                     f + "Crack driver",
                     name_of(crack_driver_names(), crack.driver),

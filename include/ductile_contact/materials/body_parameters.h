@@ -47,13 +47,33 @@ namespace DuctileContact
   };
 
   /**
+   * Body k/Elastic law: neo-Hooke (doc/model.md (16), finite strain) or
+   * small-strain linear elasticity (section 2.1, for comparisons with codes
+   * at small strain; bodies without plasticity).
+   */
+  enum class ElasticLaw
+  {
+    neo_hooke,
+    linear
+  };
+
+  inline const NameTable<ElasticLaw> &
+  elastic_law_names()
+  {
+    static const NameTable<ElasticLaw> t{{ElasticLaw::neo_hooke, "neo-Hooke"},
+                                         {ElasticLaw::linear, "linear"}};
+    return t;
+  }
+
+  /**
    * One body of a scene: the cells with a given material_id, its material
    * parameters and the physics it carries. Subsection `Body <material id>`.
    *
    * Elastic law: compressible neo-Hooke, doc/model.md (16) with shear modulus
-   * mu and bulk modulus kappa [Pa]; with `Fracture` degraded by g_k(s) with
-   * the volumetric/deviatoric split (17); with `Plasticity` the visco-
-   * plastic J2 model of doc/model.md section 3 with the hardening field alpha.
+   * mu and bulk modulus kappa [Pa] (or, with Elastic law = linear, small-
+   * strain linear elasticity, section 2.1); with `Fracture` degraded by
+   * g_k(s) with the split (17); with `Plasticity` the visco-plastic J2 model
+   * of doc/model.md section 3 with the hardening field alpha.
    */
   struct BodyParameters
   {
@@ -61,6 +81,7 @@ namespace DuctileContact
     std::string                name          = "body";
     double                     shear_modulus = MaterialDefaults::shear_modulus;
     double                     bulk_modulus  = MaterialDefaults::bulk_modulus;
+    ElasticLaw                 elastic_law   = ElasticLaw::neo_hooke;
 
     /// Mass density in the reference configuration [kg/m^3] (inertia in
     /// dynamic runs only; 0: none).

@@ -26,12 +26,16 @@ namespace DuctileContact
    *  - volumetric-deviatoric: the deviatoric energy always, the volumetric
    *    one only in expansion (J > 1), so a crack cannot interpenetrate;
    *  - none: the whole energy, in compression too (the model of codes
-   *    without a split, e.g. pfm-cracks' notched tension).
+   *    without a split, e.g. pfm-cracks' notched tension);
+   *  - spectral: the energy of the positive principal strains and of a
+   *    positive trace (Miehe et al. 2010; Elastic law = linear only, see
+   *    degraded_linear_elasticity()).
    */
   enum class EnergySplit
   {
     volumetric_deviatoric,
-    none
+    none,
+    spectral
   };
 
   inline const NameTable<EnergySplit> &
@@ -39,7 +43,8 @@ namespace DuctileContact
   {
     static const NameTable<EnergySplit> t{{EnergySplit::volumetric_deviatoric,
                                            "volumetric-deviatoric"},
-                                          {EnergySplit::none, "none"}};
+                                          {EnergySplit::none, "none"},
+                                          {EnergySplit::spectral, "spectral"}};
     return t;
   }
 
