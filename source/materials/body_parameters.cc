@@ -59,7 +59,7 @@ namespace DuctileContact
                "'neo-Hooke' is the compressible neo-Hooke law of "
                "doc/model.md (16) at finite strain; 'linear' is small-strain "
                "linear elasticity, psi = kappa/2 (tr eps)^2 + mu |dev eps|^2 "
-               "with eps = sym(F) - I (section 2.1), not frame-indifferent: "
+               "with eps = sym(F) - I (section 2.3), not frame-indifferent: "
                "for comparisons with codes at small strain, in bodies "
                "without plasticity. Fracture/Energy split applies to "
                "both.");
@@ -210,7 +210,7 @@ namespace DuctileContact
                "without a split); 'spectral' (Elastic law = linear only) "
                "degrades lambda/2 <tr eps>_+^2 + mu |eps_+|^2, the energy "
                "of a positive trace and of the positive principal strains "
-               "(Miehe et al. 2010, doc/model.md section 2.1). Bodies with "
+               "(Miehe et al. 2010, doc/model.md section 2.3). Bodies with "
                "plasticity always use 'volumetric-deviatoric'.");
     prm.add_parameter("Viscosity",
                       crack.viscosity,

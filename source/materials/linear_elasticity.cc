@@ -19,7 +19,7 @@ namespace DuctileContact
       Tensor<4, d>          C;
     };
 
-    /// The two sides psi^+ and psi^- of the split, doc/model.md 2.1.
+    /// The two sides psi^+ and psi^- of the split, doc/model.md 2.3.
     struct SplitEnergy
     {
       EnergyPart plus, minus;

@@ -48,7 +48,7 @@ namespace DuctileContact
 
   /**
    * Body k/Elastic law: neo-Hooke (doc/model.md (16), finite strain) or
-   * small-strain linear elasticity (section 2.1, for comparisons with codes
+   * small-strain linear elasticity (section 2.3, for comparisons with codes
    * at small strain; bodies without plasticity).
    */
   enum class ElasticLaw
@@ -71,7 +71,7 @@ namespace DuctileContact
    *
    * Elastic law: compressible neo-Hooke, doc/model.md (16) with shear modulus
    * mu and bulk modulus kappa [Pa] (or, with Elastic law = linear, small-
-   * strain linear elasticity, section 2.1); with `Fracture` degraded by
+   * strain linear elasticity, section 2.3); with `Fracture` degraded by
    * g_k(s) with the split (17); with `Plasticity` the visco-plastic J2 model
    * of doc/model.md section 3 with the hardening field alpha.
    */

@@ -12,7 +12,7 @@ namespace DuctileContact
 {
   /**
    * Degraded small-strain linear elasticity of an elastic body (Body k/
-   * Elastic law = linear), doc/model.md section 2.1: with eps = sym(F) - I,
+   * Elastic law = linear), doc/model.md section 2.3: with eps = sym(F) - I,
    * lambda = kappa - 2 mu/3,
    *
    *   psi(eps)  = lambda/2 (tr eps)^2 + mu eps : eps = psi^+ + psi^-,
