@@ -30,7 +30,11 @@ physical curves 1 bottom, 2 top, 4 free edges and slit.
 
 BAND = HEIGHT/2 (with XEND = 1) gives the uniform mesh of h.
 
-Usage: make_sent.py H BAND OUTPUT.msh [XEND [HEIGHT [THICKNESS]]]
+TAGS = shear (default: free) tags the edges for the notched shear test:
+5 the left and right edges, 6 the lower slit face (both held in y there),
+4 the upper slit face only.
+
+Usage: make_sent.py H BAND OUTPUT.msh [XEND [HEIGHT [THICKNESS [TAGS]]]]
        (e.g. make_sent.py 0.0075 0.05 sent.msh)
 """
 import sys
@@ -45,6 +49,10 @@ height = float(sys.argv[5]) if len(sys.argv) > 5 else 1.0
 y_mid = 0.5 * height
 mm = 1e-3
 thickness = float(sys.argv[6]) if len(sys.argv) > 6 else h
+tags = sys.argv[7] if len(sys.argv) > 7 else "free"
+if tags not in ("free", "shear"):
+    sys.exit(f"make_sent.py: TAGS = '{tags}': 'free' or 'shear'")
+shear = tags == "shear"
 
 
 def graded(a, b, h_fine, fine_from_a):
@@ -140,15 +148,15 @@ for j in range(ny - 1):
         if j == ny - 2:
             elements.append((etype, 2, edges["top"]))
         if i == 0:
-            elements.append((etype, 4, edges["left"]))
+            elements.append((etype, 5 if shear else 4, edges["left"]))
         if i == nx - 2:
-            elements.append((etype, 4, edges["right"]))
+            elements.append((etype, 5 if shear else 4, edges["right"]))
         # slit faces: the bottom of the upper row and the top of the lower row
         if xs[i + 1] <= 0.5 + 1e-12:
             if j == j_slit:
                 elements.append((etype, 4, edges["bottom"]))
             if j == j_slit - 1:
-                elements.append((etype, 4, edges["top"]))
+                elements.append((etype, 6 if shear else 4, edges["top"]))
 
 if two_d:
     names = [(1, 1, "bottom"), (1, 2, "top"), (1, 4, "free edges and slit"),
@@ -156,6 +164,10 @@ if two_d:
 else:
     names = [(2, 1, "bottom"), (2, 2, "top"), (2, 3, "slab faces"),
              (2, 4, "free edges and slit"), (3, 1, "specimen")]
+if shear:
+    names[2] = (names[2][0], 4, "upper slit face")
+    names[-1:-1] = [(names[2][0], 5, "left and right edges"),
+                    (names[2][0], 6, "lower slit face")]
 write_gmsh(out, names, nodes, elements, digits=15)
 cells = len([e for e in elements if e[0] == (3 if two_d else 5)])
 print(f"{out}: {cells} {'quadrilaterals' if two_d else 'hexahedra'}, "
