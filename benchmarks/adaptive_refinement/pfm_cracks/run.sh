@@ -10,7 +10,12 @@
 # run at a time on one core. report.py writes
 # results.md from the screen logs and puts the time to a converged peak
 # next to ours (benchmarks/adaptive_refinement/sent).
-# Usage: benchmarks/adaptive_refinement/pfm_cracks/run.sh [g4 g5 g6]
+# Its notched shear (parameters_miehe_shear_adaptive.prm: eps = 2 h of
+# level 5 = 0.0442 mm, the spectral split, 200 steps of 1e-4 mm) as shipped
+# (s4: level 4, one adaptive level) and uniform on levels 5 and 6 (s5, s6:
+# no adaptive cycle, Eps reg = 0.0441942 mm, the shipped value) for
+# same_model.sh's shear runs on the same meshes.
+# Usage: benchmarks/adaptive_refinement/pfm_cracks/run.sh [g4 g5 g6 s4 s5 s6]
 #   The source and build go to work/ (not committed; PFM_DIR overrides);
 #   PFM_GIT names another place to clone from (a local mirror, say).
 set -euo pipefail
@@ -33,16 +38,24 @@ if [[ ! -x "$work/build/cracks" ]]; then
 fi
 
 for run in "${runs[@]}"; do
-  level=${run#g}
+  level=${run#[gs]}
   dir=$here/runs/$run
   if grep -qs "Total wallclock" "$dir/screen.log"; then
     echo "== $run (done)"
     continue
   fi
   mkdir -p "$dir"
-  sed -e "s/\(set Global pre-refinement steps[[:space:]]*=\).*/\1 $level/" \
-      -e "s/\(set Adaptive refinement cycles[[:space:]]*=\).*/\1 $((6 - level))/" \
-      "$work/src/parameters_miehe_tension_adaptive.prm" > "$dir/parameters.prm"
+  case $run in
+    g?) sed -e "s/\(set Global pre-refinement steps[[:space:]]*=\).*/\1 $level/" \
+            -e "s/\(set Adaptive refinement cycles[[:space:]]*=\).*/\1 $((6 - level))/" \
+            "$work/src/parameters_miehe_tension_adaptive.prm" > "$dir/parameters.prm" ;;
+    s4) cp "$work/src/parameters_miehe_shear_adaptive.prm" "$dir/parameters.prm" ;;
+    s?) sed -e "s/\(set Global pre-refinement steps[[:space:]]*=\).*/\1 $level/" \
+            -e "s/\(set Adaptive refinement cycles[[:space:]]*=\).*/\1 0/" \
+            -e "s/\(set Eps reg[[:space:]]*=\).*/\1 0.0441942/" \
+            "$work/src/parameters_miehe_shear_adaptive.prm" > "$dir/parameters.prm" ;;
+    *) echo "run.sh: unknown run '$run' (g4 g5 g6 s4 s5 s6)" >&2; exit 1 ;;
+  esac
   echo "== $run ($(date +%H:%M))"
   (cd "$dir" && /usr/bin/time -f "%e s wall, %M KB" -o time.txt \
     mpirun -np 1 "$work/build/cracks" parameters.prm > screen.log 2>&1) ||

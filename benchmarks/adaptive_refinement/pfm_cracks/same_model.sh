@@ -10,14 +10,18 @@
 # Then the same scene with our fourth-order phase field beside it
 # (ours-at4-gL: l_f = eps/2 = 0.0220971 mm, the same transition zone, Q2,
 # the C0IP default penalty) on levels 4 and 5.
+# Its notched shear the same way (shear-gL: prm/sent_shear_pfm_2d.prm,
+# small-strain linear elasticity with the spectral split, on levels 4, 5
+# and 6; run.sh's s5 and s6 are pfm-cracks on the same uniform meshes).
 # Usage: benchmarks/adaptive_refinement/pfm_cracks/same_model.sh [RUN...]
-#   RUN: at2-g4 at2-g5 at2-g6 at4-g4 at4-g5 (default: all)
+#   RUN: at2-g4 at2-g5 at2-g6 at4-g4 at4-g5 shear-g4 shear-g5 shear-g6
+#   (default: all)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 require_build
 runs=("$@")
-((${#runs[@]})) || runs=(at2-g4 at2-g5 at2-g6 at4-g4 at4-g5)
+((${#runs[@]})) || runs=(at2-g4 at2-g5 at2-g6 at4-g4 at4-g5 shear-g4 shear-g5 shear-g6)
 
 fourth_order='subsection Finite elements
   set Polynomial degree = 2
@@ -39,8 +43,10 @@ for run in "${runs[@]}"; do
   rm -rf "$dir"
   mkdir -p "$dir"
   h=$(python3 -c "print(0.5 / 2**$level)")
-  python3 "$project_root/prm/meshes/make_sent.py" "$h" 0.5 "$dir/mesh.msh" 1.0 1.0 0
-  { cat "$project_root/prm/sent_pfm_2d.prm"
+  scene=sent_pfm_2d.prm tags=free
+  [[ $run == shear-* ]] && scene=sent_shear_pfm_2d.prm tags=shear
+  python3 "$project_root/prm/meshes/make_sent.py" "$h" 0.5 "$dir/mesh.msh" 1.0 1.0 0 $tags
+  { cat "$project_root/prm/$scene"
     printf 'subsection Mesh\n  subsection Gmsh\n    set File name = %s\n  end\nend\n' "$dir/mesh.msh"
     printf 'subsection Output\n  set Directory = %s\nend\n' "$dir"
     [[ $run == at4-* ]] && echo "$fourth_order"
