@@ -11,14 +11,16 @@ sys.path.insert(0, os.path.join(here, "..", ".."))
 from runs_io import read_statistics  # noqa: E402
 
 
-def pfm_curve(name):
-    """(u [mm], load [N/mm]) per converged step of a pfm-cracks screen log."""
+def pfm_curve(name, axis="y"):
+    """(u [mm], load [N/mm]) per converged step of a pfm-cracks screen log
+    (its 'Load y' of the tension test, 'Load x' of the shear test)."""
     path = os.path.join(here, "runs", name, "screen.log")
     if not os.path.isfile(path):
         return [], []
     u, load = [], []
     for line in open(path):
-        m = re.match(r"No (\d+) time ([0-9.e+-]+) .*Load y: ([0-9.e+-]+)", line)
+        m = re.match(r"No (\d+) time ([0-9.e+-]+) .*Load " + axis +
+                     r": ([0-9.e+-]+)", line)
         if m:
             u.append(float(m.group(2)))
             load.append(float(m.group(3)))
@@ -56,7 +58,7 @@ def pfm_energy_curve(name):
     return us, fs
 
 
-def pfm_run(name):
+def pfm_run(name, axis="y"):
     """Peak and the cost up to it from a pfm-cracks screen log."""
     path = os.path.join(here, "runs", name, "screen.log")
     if not os.path.isfile(path):
@@ -71,7 +73,8 @@ def pfm_run(name):
         m = re.search(r"Newton iterations: (\d+)", line)
         if m:
             newton += int(m.group(1))
-        m = re.match(r"No (\d+) time ([0-9.e+-]+) .*Load y: ([0-9.e+-]+)", line)
+        m = re.match(r"No (\d+) time ([0-9.e+-]+) .*Load " + axis +
+                     r": ([0-9.e+-]+)", line)
         if m:
             pending = dict(step=int(m.group(1)), u=float(m.group(2)),
                            load=float(m.group(3)), dofs=dofs, newton=newton,
@@ -114,21 +117,25 @@ def our_run(name):
 
 def same_model_run(level, kind="at2"):
     """Our run of prm/sent_pfm_2d.prm on pfm-cracks' level-L mesh
-    (same_model.sh; kind at2, or at4 for the fourth-order phase field): the
-    peak, the cost up to it, the force curve."""
+    (same_model.sh; kind at2, or at4 for the fourth-order phase field, or
+    shear for prm/sent_shear_pfm_2d.prm): the peak, the cost up to it, the
+    force curve."""
     path = os.path.join(here, "runs", f"ours-{kind}-g{level}", "statistics")
     if not os.path.isfile(path):
         return None
     rows = read_statistics(path)
-    # Plane strain: F2_y per unit thickness [N/m] -> N/mm.
-    load = [r["F2_y"] * 1e-3 for r in rows]
-    u = [r["u2_y"] * 1e3 for r in rows]
+    axis, steps = ("x", 200.) if kind == "shear" else ("y", 89.)
+    # Plane strain: F2 per unit thickness [N/m] -> N/mm.
+    load = [r["F2_" + axis] * 1e-3 for r in rows]
+    u = [r["u2_" + axis] * 1e3 for r in rows]
     k = max(range(len(rows)), key=lambda n: load[n])
     screen = open(os.path.join(os.path.dirname(path), "screen.txt")).read()
     dofs = re.search(r"DoFs: (\d+)", screen)
     end = "Total wallclock" in screen and "exit code" not in screen.lower()
     return dict(load=load[k], u=u[k], dofs=int(dofs.group(1)) if dofs else 0,
-                u_end=u[-1], reached_end=abs(rows[-1]["time"] - 89.) < 1e-9,
+                u_end=u[-1], reached_end=abs(rows[-1]["time"] - steps) < 1e-9,
+                residual=max(abs(r["energy_residual"]) / r["external_work"]
+                             for r in rows[1:]),
                 newton=sum(r["newton_iterations"] for r in rows[1:k + 1]),
                 wall=rows[k]["wall_time"], total=rows[-1]["wall_time"],
                 curve=(u, load))
@@ -218,6 +225,75 @@ def same_model_table():
     return lines
 
 
+def shear_table():
+    """Lines of the notched-shear comparison and its plot."""
+    lines = ["", "## Notched shear, the same model (run.sh s4 s5 s6, "
+             "same_model.sh shear-g4 ... g6)", "",
+             "pfm-cracks' parameters_miehe_shear_adaptive.prm (s4 as shipped: "
+             "level 4 and one adaptive level; s5, s6 uniform, eps = 0.0441942 "
+             "mm) against ours with prm/sent_shear_pfm_2d.prm (2-D, AT2 with "
+             "l_f = eps, small-strain linear elasticity, the spectral split, "
+             "Q1, the same 200 load steps) on uniform meshes of the same "
+             "levels; pfm-cracks with the phase field extrapolated in the "
+             "displacement equation, ours monolithic. One rank each.", "",
+             "| level (h) | unknowns | pfm-cracks Load x peak | at u | "
+             "pfm-cracks dW/du peak | at u | ours peak | at u | ours / "
+             "pfm-cracks dW/du - 1 | pfm-cracks Newton its / wall to the peak | "
+             "ours Newton its / wall to the peak | ours: run ends at u | ours: "
+             "largest energy residual / W_ext |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    curves = []
+    for level in (4, 5, 6):
+        name = f"s{level}"
+        p, o = pfm_run(name, "x"), same_model_run(level, "shear")
+        if not o:
+            continue
+        h = 0.5 / 2**level
+        e = pfm_energy_peak(name)
+        if p and e:
+            pk = p["peak"]
+            pfm = (f"{pk['load']:.1f} N/mm | {pk['u']:.5f} mm | "
+                   f"{e[1]:.1f} N/mm | {e[0]:.5f} mm",
+                   f"{o['load'] / e[1] - 1:+.2%}",
+                   f"{pk['newton']} / {pk['wall']:.0f} s")
+        else:
+            pfm = ("- | - | - | -", "-", "-")
+        end = ("200 steps" if o["reached_end"] else
+               f"{o['u_end']:.5f} mm (gave up)")
+        lines.append(f"| {level} ({h:.5g} mm) | {o['dofs']} | {pfm[0]} | "
+                     f"{o['load']:.1f} N/mm | {o['u']:.5f} mm | {pfm[1]} | "
+                     f"{pfm[2]} | {o['newton']:.0f} / {o['wall']:.0f} s | "
+                     f"{end} | {o['residual']:.1e} |")
+        curves.append((level, pfm_curve(name, "x"), o["curve"],
+                       pfm_energy_curve(name)))
+    if curves:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+        for ax, (x0, x1, y0, y1) in zip(axes, [(0, 0.02, 0, 800),
+                                              (0.008, 0.0135, 300, 700)]):
+            for level, (pu, pl), (ou, ol), (eu, el) in curves:
+                line, = ax.plot(ou, ol, label=f"ours, level {level}")
+                if pu:
+                    ax.plot(pu, pl, "--", color=line.get_color(),
+                            label=f"pfm-cracks Load x, level {level}")
+                    ax.plot(eu, el, ":", color=line.get_color(),
+                            label=f"pfm-cracks dW/du, level {level}")
+            ax.set_xlim(x0, x1)
+            ax.set_ylim(y0, y1)
+            ax.set_xlabel("top displacement u [mm]")
+            ax.set_ylabel("load [N/mm]")
+            ax.grid(alpha=0.3)
+        axes[0].set_title("Notched shear, AT2, spectral split, Q1 (same model)")
+        axes[1].set_title("near the peak")
+        axes[1].legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(os.path.join(here, "same_model_shear.png"), dpi=120)
+        lines += ["", "![force curves](same_model_shear.png)"]
+    return lines
+
+
 def main():
     lines = ["# pfm-cracks and ductile-contact: adaptive notched tension "
              "(generated by report.py)", "",
@@ -252,6 +328,7 @@ def main():
             f"{r['u']:.5f} mm | {r['refinements']:.0f} | {r['newton']:.0f} | "
             f"{r['wall']:.0f} s | - |")
     lines += same_model_table()
+    lines += shear_table()
     out = "\n".join(lines) + "\n"
     open(os.path.join(here, "results.md"), "w").write(out)
     print(out)
