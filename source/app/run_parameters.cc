@@ -95,6 +95,16 @@ namespace DuctileContact
     contact_pair_numbers = pair_list;
 
     declare_dimension(prm, dimension);
+    add_option(prm,
+               "Out-of-plane state",
+               out_of_plane,
+               out_of_plane_names(),
+               "With Dimension = 2: 'plane strain' holds the out-of-plane "
+               "stretch, F_33 = 1 (a thick body); 'plane stress' frees it "
+               "so that P_33 = 0 at every material point (a thin sheet; "
+               "doc/model.md section 2.2), for every material law. Forces, "
+               "energies and works stay per unit reference thickness. "
+               "Dimension = 3 needs 'plane strain' (it is not read).");
     mesh.declare(prm);
 
     prm.enter_subsection("Finite elements");
@@ -180,6 +190,8 @@ namespace DuctileContact
     prm.clear();
     declare(mids, bids, pairs);
     prm.parse_input_from_string(text, "", false);
+    for (BodyParameters &b : bodies)
+      b.plane_stress = out_of_plane == OutOfPlane::plane_stress;
     check();
   }
 
@@ -336,6 +348,10 @@ namespace DuctileContact
                 "this program is the " + std::to_string(dim) +
                   "-D build; run 'ductile-contact', which hands the input "
                   "to the build of its dimension");
+    check_input(dim == 2 || out_of_plane == OutOfPlane::plane_strain,
+                "Out-of-plane state",
+                name_of(out_of_plane_names(), out_of_plane),
+                "plane stress needs Dimension = 2");
     mesh.check();
     for (const BodyParameters &b : bodies)
       b.check();

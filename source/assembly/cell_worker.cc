@@ -7,6 +7,7 @@
 #include <ductile_contact/materials/body_material.h>
 #include <ductile_contact/materials/degradation.h>
 #include <ductile_contact/materials/neo_hooke.h>
+#include <ductile_contact/materials/plane_stress.h>
 #include <ductile_contact/phase_field/c0ip.h>
 
 #include <algorithm>
@@ -101,17 +102,22 @@ namespace DuctileContact
 
 
 
-    /// The plastic work of the step at one point (plastic_work_of_step()).
+    /// The plastic work of the step at one point (plastic_work_of_step());
+    /// in plane stress F_n takes the accepted step's stretch.
     double
     plastic_work(const Tensor<2, material_dim> &F,
                  const Tensor<2, dim>          &grad_u_old,
+                 const bool                     plane_stress,
                  const MaterialResponse        &m,
                  const PlasticHistory          &history_n,
                  const double                   s_n,
                  const double                   s,
                  const PlasticityParameters    &plastic)
     {
-      return plastic_work_of_step(deformation_gradient(grad_u_old),
+      const Tensor<2, material_dim> F_n = deformation_gradient(grad_u_old);
+      return plastic_work_of_step(plane_stress
+                                    ? with_stretch(F_n, history_n.stretch)
+                                    : F_n,
                                   F,
                                   history_n,
                                   m.updated.Cp_inv,
@@ -236,6 +242,7 @@ namespace DuctileContact
       {
         const double work = plastic_work(F,
                                          scratch.grad_u_old[q],
+                                         body.plane_stress,
                                          m,
                                          history.plastic,
                                          scratch.s_old[q],
@@ -382,6 +389,9 @@ namespace DuctileContact
           continue;
         const MaterialResponse m =
           point_response(body, F, q, index, fields, scratch, pass, sums);
+        // In plane stress F_33 is the stretch the material point found.
+        const Tensor<2, material_dim> F_point =
+          body.plane_stress ? with_stretch(F, m.updated.stretch) : F;
         const double JxW = fe_values.JxW(q);
         sums.stored_energy += m.psi_elastic * JxW;
         volume += JxW;
@@ -396,7 +406,7 @@ namespace DuctileContact
           {
             tau_sum += JxW * m.tau;
             sigma_sum += (JxW / m.J) * m.tau;
-            b_sum += JxW * symmetrize(F * transpose(F));
+            b_sum += JxW * symmetrize(F_point * transpose(F_point));
             Cp_sum += JxW * invert(m.updated.Cp_inv);
           }
         if (pass.averages && !pass.updated_history)
@@ -436,7 +446,7 @@ namespace DuctileContact
           hardening_point(m,
                           body,
                           plastic,
-                          F,
+                          F_point,
                           q,
                           history_new != nullptr,
                           scratch,

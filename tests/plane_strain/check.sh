@@ -2,7 +2,8 @@
 # Usage: check.sh MPIEXEC NP PROGRAM NAME
 #
 # Runs tests/plane_strain/NAME.prm (Dimension = 2) and NAME_slab.prm (the
-# same scene as a 3-D slab with u_z = 0 on both faces) with PROGRAM, the
+# same scene as a 3-D slab with u_z = 0 on both faces; for a plane-stress
+# NAME.prm a slab whose stress state has P_33 = 0) with PROGRAM, the
 # 3-D program, which hands the 2-D input to its plane-strain build. Passes
 # when both finish, every statistics column agrees
 # (compare_plane_strain.py), and the printed quantities of interest are

@@ -5,7 +5,8 @@ SLAB and PLANE are the statistics files of the same scene run as a 3-D slab
 of THICKNESS with u_z = 0 on both faces and in plane strain (Dimension = 2).
 The plane-strain discrete problem is the slab's restricted to fields that do
 not depend on z, and the slab's solution is such a field (the problem is
-symmetric in z), so the two runs must agree to the solvers' tolerance:
+symmetric in z), so the two runs must agree to the solvers' tolerance (for
+a plane-stress PLANE, a SLAB whose stress state is uniaxial in the plane):
 every column of PLANE that SLAB has too, the slab's forces, energies and
 works, momenta and areas divided by THICKNESS (2-D gives them per unit thickness), to 1e-6 of
 the column family's scale (tests/checkpoint/compare_statistics.py; the
@@ -66,7 +67,7 @@ def main():
             e = abs(slab_value(a, name) - b[k]) / s / allowed
             if e > worst:
                 worst, where = e, f"{name} at step {int(b[0])}"
-    print(f"plane strain against the slab, {len(plane) - 1} steps: "
+    print(f"the 2-D run against the slab, {len(plane) - 1} steps: "
           + ("the same" if worst <= 1 else "DIFFERENT"))
     for name in qois:
         k = head.index(name)

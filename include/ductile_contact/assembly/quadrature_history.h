@@ -55,7 +55,7 @@ namespace DuctileContact
 
     /// Doubles per point in pack().
     static constexpr unsigned int packed_size =
-      dealii::SymmetricTensor<2, material_dim>::n_independent_components + 3;
+      dealii::SymmetricTensor<2, material_dim>::n_independent_components + 4;
 
     /// The history of @p cell's points as one flat vector (checkpoints).
     template <typename CellIterator>
@@ -67,10 +67,11 @@ namespace DuctileContact
       const PointHistory *h = (*this)(cell);
       for (unsigned int q = 0; q < n_points; ++q)
         {
-          for (unsigned int i = 0; i < packed_size - 3; ++i)
+          for (unsigned int i = 0; i < packed_size - 4; ++i)
             packed.push_back(h[q].plastic.Cp_inv.access_raw_entry(i));
           packed.push_back(h[q].plastic.alpha);
           packed.push_back(h[q].plastic.r);
+          packed.push_back(h[q].plastic.stretch);
           packed.push_back(h[q].driving_energy_max);
         }
       return packed;
@@ -88,10 +89,11 @@ namespace DuctileContact
       auto          p = packed.begin();
       for (unsigned int q = 0; q < n_points; ++q)
         {
-          for (unsigned int i = 0; i < packed_size - 3; ++i)
+          for (unsigned int i = 0; i < packed_size - 4; ++i)
             h[q].plastic.Cp_inv.access_raw_entry(i) = *p++;
           h[q].plastic.alpha      = *p++;
           h[q].plastic.r          = *p++;
+          h[q].plastic.stretch    = *p++;
           h[q].driving_energy_max = *p++;
         }
       return true;

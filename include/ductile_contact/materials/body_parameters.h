@@ -66,6 +66,26 @@ namespace DuctileContact
   }
 
   /**
+   * `Out-of-plane state` of a 2-D run (doc/model.md section 2.2): plane
+   * strain (F_33 = 1) or plane stress (P_33 = 0, the stretch F_33 solved at
+   * every material point, plane_stress()).
+   */
+  enum class OutOfPlane
+  {
+    plane_strain,
+    plane_stress
+  };
+
+  inline const NameTable<OutOfPlane> &
+  out_of_plane_names()
+  {
+    static const NameTable<OutOfPlane> t{
+      {OutOfPlane::plane_strain, "plane strain"},
+      {OutOfPlane::plane_stress, "plane stress"}};
+    return t;
+  }
+
+  /**
    * One body of a scene: the cells with a given material_id, its material
    * parameters and the physics it carries. Subsection `Body <material id>`.
    *
@@ -89,6 +109,10 @@ namespace DuctileContact
     /// v(X) at t = 0 [m/s]: three muparser expressions of x, y, z
     /// separated by ';'.
     std::string initial_velocity = zero_vector_expression();
+
+    /// Plane stress (P_33 = 0, plane_stress()) instead of plane strain:
+    /// not an entry of the body, set from `Out-of-plane state` of a 2-D run.
+    bool plane_stress = false;
 
     /// Whether the body carries the hardening field alpha (plasticity).
     bool plasticity = false;

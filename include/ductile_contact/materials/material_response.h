@@ -21,6 +21,10 @@ namespace DuctileContact
     /// interpolation shared by a cell's points) holds the point where it
     /// is. Non-yielding points keep it (doc/model.md section 3.1, choice 3).
     double r = 0.;
+    /// F_33 of the accepted state in plane stress (plane_stress(); 1
+    /// otherwise): the start of the next step's plastic work and the first
+    /// guess of the next stretch.
+    double stretch = 1.;
   };
 
   /**
