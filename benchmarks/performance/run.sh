@@ -47,6 +47,7 @@ declare -A variants=(
   [ductile_notch]="default output relative direct best"
   [ductile_notch_2d]="default output"
   [sent_pfm_2d]="default output"
+  [sent_shear_pfm_2d]="default output"
   [block_on_strip_2d]="default output"
   [block_impact_2d]="default output"
   [sent_coarse]="default output relative constant direct monotone linear"
@@ -67,7 +68,7 @@ declare -A settings=(
 )
 order=(box_compression gmsh_distorted_cube necking_bar two_bodies two_bodies_no_contact
        block_on_plate hertz_sphere hertz_cylinder_2d ironing ironing_2d ductile_notch ductile_notch_2d sent_pfm_2d
-       block_on_strip_2d block_impact_2d
+       sent_shear_pfm_2d block_on_strip_2d block_impact_2d
        sent_coarse
        bar_impact)
 
