@@ -104,7 +104,7 @@ namespace DuctileContact
                "so that P_33 = 0 at every material point (a thin sheet; "
                "doc/model.md section 2.2), for every material law. Forces, "
                "energies and works stay per unit reference thickness. "
-               "Dimension = 3 needs 'plane strain' (it is not read).");
+               "Dimension = 3 refuses 'plane stress'.");
     mesh.declare(prm);
 
     prm.enter_subsection("Finite elements");

@@ -169,6 +169,65 @@ namespace DuctileContact
       sums.scale_squared[Block::hardening] += rows.scale_alpha.norm_sqr();
       sums.scale_squared[Block::phase_field] += rows.scale_s.norm_sqr();
     }
+
+    /// @p copy emptied for @p cell: its rows sized and indexed.
+    LocalRows &
+    start_copy(const DoFHandler<dim>::active_cell_iterator &cell,
+               CellCopy                                    &copy)
+    {
+      copy.sums         = AssemblyReduction();
+      copy.n_faces      = 0;
+      copy.has_averages = false;
+      copy.cell_index   = cell->active_cell_index();
+      copy.cell.reinit(cell->get_fe().n_dofs_per_cell());
+      cell->get_dof_indices(copy.cell.indices);
+      return copy.cell;
+    }
+
+    /// Volume averages of a cell's point quantities (CellCopy's output
+    /// fields), summed over its points.
+    struct CellAverages
+    {
+      double volume = 0, vm = 0, mean = 0, mean_J = 0, driver = 0;
+      SymmetricTensor<2, material_dim> tau, sigma, b, Cp;
+
+      /// Adds a point of weight @p JxW with its whole deformation gradient
+      /// @p F; the tensors only if @p tensors.
+      void
+      add(const MaterialResponse        &m,
+          const Tensor<2, material_dim> &F,
+          const double                   JxW,
+          const bool                     tensors)
+      {
+        volume += JxW;
+        vm += von_mises(m.tau) * JxW;
+        mean += trace(m.tau) / 3. * JxW;
+        mean_J += m.J * JxW;
+        if (!tensors)
+          return;
+        tau += JxW * m.tau;
+        sigma += (JxW / m.J) * m.tau;
+        b += JxW * symmetrize(F * transpose(F));
+        Cp += JxW * invert(m.updated.Cp_inv);
+      }
+
+      /// The averages into @p copy (none for a cell without volume).
+      void
+      write(CellCopy &copy) const
+      {
+        copy.has_averages = volume > 0.;
+        if (!copy.has_averages)
+          return;
+        copy.von_mises           = vm / volume;
+        copy.mean_stress         = mean / volume;
+        copy.mean_J              = mean_J / volume;
+        copy.crack_driving_force = driver / volume;
+        copy.kirchhoff           = tau / volume;
+        copy.cauchy              = sigma / volume;
+        copy.b                   = b / volume;
+        copy.Cp                  = Cp / volume;
+      }
+    };
   } // namespace
 
 
@@ -351,13 +410,7 @@ namespace DuctileContact
                                             body.crack.residual_stiffness};
     const LocalDofs &dofs = discretisation.local_dofs(cell->active_fe_index());
 
-    copy.sums         = AssemblyReduction();
-    copy.n_faces      = 0;
-    copy.has_averages = false;
-    copy.cell_index   = index;
-    LocalRows &rows   = copy.cell;
-    rows.reinit(cell->get_fe().n_dofs_per_cell());
-    cell->get_dof_indices(rows.indices);
+    LocalRows         &rows = start_copy(cell, copy);
     AssemblyReduction &sums = copy.sums;
 
     load_cell_state(fe_values,
@@ -376,8 +429,7 @@ namespace DuctileContact
     if (tangent)
       rows.blocks.reinit(dofs, n_q);
 
-    double volume = 0, vm = 0, mean = 0, mean_J = 0, driver_sum = 0;
-    SymmetricTensor<2, material_dim> tau_sum, sigma_sum, b_sum, Cp_sum;
+    CellAverages averages;
     for (unsigned int q = 0; q < n_q; ++q)
       {
         const Tensor<2, material_dim> F =
@@ -394,32 +446,25 @@ namespace DuctileContact
           body.plane_stress ? with_stretch(F, m.updated.stretch) : F;
         const double JxW = fe_values.JxW(q);
         sums.stored_energy += m.psi_elastic * JxW;
-        volume += JxW;
-        vm += von_mises(m.tau) * JxW;
+        averages.add(m, F_point, JxW, pass.averages);
         if (has_s)
           sums.max_s_point = std::max(sums.max_s_point, scratch.s[q]);
         if (has_s && scratch.s[q] >= cracked_threshold)
           sums.note_cracked(fe_values.quadrature_point(q), JxW);
-        mean += trace(m.tau) / 3. * JxW;
-        mean_J += m.J * JxW;
-        if (pass.averages)
-          {
-            tau_sum += JxW * m.tau;
-            sigma_sum += (JxW / m.J) * m.tau;
-            b_sum += JxW * symmetrize(F_point * transpose(F_point));
-            Cp_sum += JxW * invert(m.updated.Cp_inv);
-          }
+        const double psi_D = has_s
+                               ? crack_driving_energy(m,
+                                                      scratch.alpha[q],
+                                                      body.crack.driver,
+                                                      body.crack.work_driver,
+                                                      plastic)
+                               : 0.;
         if (pass.averages && !pass.updated_history)
           {
             // Only the cell averages: the crack driver, no rows.
             if (has_s)
               {
                 const CrackDriver d =
-                  crack_driver(crack_driving_energy(m,
-                                                    scratch.alpha[q],
-                                                    body.crack.driver,
-                                                    body.crack.work_driver,
-                                                    plastic),
+                  crack_driver(psi_D,
                                crack_history
                                  ? scratch.history_n[q]->driving_energy_max
                                  : 0.,
@@ -429,7 +474,7 @@ namespace DuctileContact
                                index,
                                q,
                                sums);
-                driver_sum += -d.g1 * d.psi_H * JxW;
+                averages.driver += -d.g1 * d.psi_H * JxW;
               }
             continue;
           }
@@ -456,43 +501,27 @@ namespace DuctileContact
                           rows,
                           sums);
         if (has_s)
-          driver_sum +=
-            phase_field_point(m,
-                              crack_driving_energy(m,
-                                                   scratch.alpha[q],
-                                                   body.crack.driver,
-                                                   body.crack.work_driver,
-                                                   plastic),
-                              body,
-                              degradation,
-                              q,
-                              history_new,
-                              scratch,
-                              dofs,
-                              step.dt,
-                              JxW,
-                              targets,
-                              index,
-                              rows,
-                              sums);
+          averages.driver += phase_field_point(m,
+                                               psi_D,
+                                               body,
+                                               degradation,
+                                               q,
+                                               history_new,
+                                               scratch,
+                                               dofs,
+                                               step.dt,
+                                               JxW,
+                                               targets,
+                                               index,
+                                               rows,
+                                               sums);
         if (history_new && has_alpha)
           history_new[q].plastic = m.updated;
       }
 
     if (pass.averages)
       {
-        copy.has_averages = volume > 0.;
-        if (copy.has_averages)
-          {
-            copy.von_mises           = vm / volume;
-            copy.mean_stress         = mean / volume;
-            copy.mean_J              = mean_J / volume;
-            copy.crack_driving_force = driver_sum / volume;
-            copy.kirchhoff           = tau_sum / volume;
-            copy.cauchy              = sigma_sum / volume;
-            copy.b                   = b_sum / volume;
-            copy.Cp                  = Cp_sum / volume;
-          }
+        averages.write(copy);
         if (!pass.updated_history)
           return;
       }
