@@ -451,13 +451,13 @@ namespace DuctileContact
           sums.max_s_point = std::max(sums.max_s_point, scratch.s[q]);
         if (has_s && scratch.s[q] >= cracked_threshold)
           sums.note_cracked(fe_values.quadrature_point(q), JxW);
-        const double psi_D = has_s
-                               ? crack_driving_energy(m,
-                                                      scratch.alpha[q],
-                                                      body.crack.driver,
-                                                      body.crack.work_driver,
-                                                      plastic)
-                               : 0.;
+        const DrivingEnergy psi_D =
+          has_s ? crack_driving_energy(m,
+                                       scratch.alpha[q],
+                                       body.crack.driver,
+                                       body.crack.work_driver,
+                                       plastic)
+                : DrivingEnergy();
         if (pass.averages && !pass.updated_history)
           {
             // Only the cell averages: the crack driver, no rows.
