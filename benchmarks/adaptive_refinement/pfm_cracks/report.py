@@ -124,7 +124,7 @@ def same_model_run(level, kind="at2"):
     if not os.path.isfile(path):
         return None
     rows = read_statistics(path)
-    axis, steps = ("x", 200.) if kind == "shear" else ("y", 89.)
+    axis, steps = ("x", 200.) if kind.startswith("shear") else ("y", 89.)
     # Plane strain: F2 per unit thickness [N/m] -> N/mm.
     load = [r["F2_" + axis] * 1e-3 for r in rows]
     u = [r["u2_" + axis] * 1e3 for r in rows]
@@ -266,6 +266,18 @@ def shear_table():
                      f"{end} | {o['residual']:.1e} |")
         curves.append((level, pfm_curve(name, "x"), o["curve"],
                        pfm_energy_curve(name)))
+    fourth = same_model_run(4, "shear4")
+    if fourth:
+        second = same_model_run(4, "shear")
+        versus = f"{fourth['load'] / second['load'] - 1:+.1%}" if second else "-"
+        end = ("200 steps" if fourth["reached_end"] else
+               f"{fourth['u_end']:.5f} mm (gave up)")
+        lines += ["", "Our fourth-order phase field beside it (l_f = eps/2, Q2, "
+                  "the level-4 mesh): peak "
+                  f"{fourth['load']:.1f} N/mm at {fourth['u']:.5f} mm ({versus} "
+                  f"against AT2 on the level), {fourth['newton']:.0f} Newton "
+                  f"its / {fourth['wall']:.0f} s to it, run ends at {end}, "
+                  f"largest energy residual {fourth['residual']:.1e} of W_ext."]
     if curves:
         import matplotlib
         matplotlib.use("Agg")
@@ -280,6 +292,9 @@ def shear_table():
                             label=f"pfm-cracks Load x, level {level}")
                     ax.plot(eu, el, ":", color=line.get_color(),
                             label=f"pfm-cracks dW/du, level {level}")
+            if fourth:
+                ax.plot(*fourth["curve"], "-.",
+                        label="ours fourth order, level 4")
             ax.set_xlim(x0, x1)
             ax.set_ylim(y0, y1)
             ax.set_xlabel("top displacement u [mm]")

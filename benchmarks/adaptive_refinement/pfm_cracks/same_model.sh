@@ -15,13 +15,14 @@
 # and 6; run.sh's s5 and s6 are pfm-cracks on the same uniform meshes).
 # Usage: benchmarks/adaptive_refinement/pfm_cracks/same_model.sh [RUN...]
 #   RUN: at2-g4 at2-g5 at2-g6 at4-g4 at4-g5 shear-g4 shear-g5 shear-g6
+#   shear4-g4 (the shear with the fourth-order phase field, as at4)
 #   (default: all)
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/../../../scripts/env.sh"
 require_build
 runs=("$@")
-((${#runs[@]})) || runs=(at2-g4 at2-g5 at2-g6 at4-g4 at4-g5 shear-g4 shear-g5 shear-g6)
+((${#runs[@]})) || runs=(at2-g4 at2-g5 at2-g6 at4-g4 at4-g5 shear-g4 shear-g5 shear-g6 shear4-g4)
 
 fourth_order='subsection Finite elements
   set Polynomial degree = 2
@@ -44,14 +45,14 @@ for run in "${runs[@]}"; do
   mkdir -p "$dir"
   h=$(python3 -c "print(0.5 / 2**$level)")
   scene=sent_pfm_2d.prm tags=free
-  [[ $run == shear-* ]] && scene=sent_shear_pfm_2d.prm tags=shear
+  [[ $run == shear* ]] && scene=sent_shear_pfm_2d.prm tags=shear
   python3 "$project_root/prm/meshes/make_sent.py" "$h" 0.5 "$dir/mesh.msh" 1.0 1.0 0 $tags
   { cat "$project_root/prm/$scene"
     printf 'subsection Mesh\n  subsection Gmsh\n    set File name = %s\n  end\nend\n' "$dir/mesh.msh"
     printf 'subsection Output\n  set Directory = %s\nend\n' "$dir"
-    [[ $run == at4-* ]] && echo "$fourth_order"
+    [[ $run == at4-* || $run == shear4-* ]] && echo "$fourth_order"
     # pfm-cracks' 200 steps (the shipped scene stops at 125)
-    [[ $run == shear-* ]] && printf 'subsection Load stepping\n  set End time = 200\nend\n'
+    [[ $run == shear* ]] && printf 'subsection Load stepping\n  set End time = 200\nend\n'
   } > "$dir/scene.prm"
   echo "== ours-$run ($(date +%H:%M))"
   run_scene 1 "$dir"

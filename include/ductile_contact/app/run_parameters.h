@@ -50,9 +50,9 @@ namespace DuctileContact
   {
     /// `Dimension`: 3, or 2 for plane strain; always the build's dim once
     /// parsed (the program hands other inputs to the other build).
-    unsigned int   dimension = dim;
+    unsigned int dimension = dim;
     /// `Out-of-plane state` of a 2-D run: plane strain or plane stress.
-    OutOfPlane out_of_plane = OutOfPlane::plane_strain;
+    OutOfPlane     out_of_plane = OutOfPlane::plane_strain;
     MeshParameters mesh;
     unsigned int   fe_degree         = 2;
     FieldBasis     phase_field_basis = FieldBasis::lagrange;
