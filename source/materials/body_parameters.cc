@@ -62,7 +62,7 @@ namespace DuctileContact
                "with eps = sym(F) - I (section 2.3), not frame-indifferent: "
                "for comparisons with codes at small strain, in bodies "
                "without plasticity. Fracture/Energy split applies to "
-               "both.");
+               "both ('spectral' to 'linear' only).");
     prm.add_parameter(
       "Density",
       density,
