@@ -8,7 +8,7 @@
 //    (the spectral split's path; with the whole energy degraded it would
 //    branch up as well): at the end the cracked zone (s >= 0.95) lies below
 //    the slit (y < 0.5 mm), reaches below y = 0.42 mm and right of
-//    x = 0.55 mm (0.35 and 0.587 here: margins of ~5 cells);
+//    x = 0.52 mm (0.35 and 0.587 here: margins of about two cells);
 //  - the energy balance closes at every step to 1e-3 of W_ext;
 //  - s never decreases at any DoF (Irreversibility = bound; to the Newton
 //    tolerance 1e-8, as in two_d/sent_pfm).
