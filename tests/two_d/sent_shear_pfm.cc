@@ -54,7 +54,7 @@ main(int argc, char **argv)
   const double      y_min = t.at("cracked_min_y")[last] * 1e3,
                y_max      = t.at("cracked_max_y")[last] * 1e3,
                x_max      = t.at("cracked_max_x")[last] * 1e3;
-  const bool down         = y_max < 0.5 && y_min < 0.42 && x_max > 0.55;
+  const bool down         = y_max < 0.5 && y_min < 0.42 && x_max > 0.52;
 
   out << "peak reaction " << peak << " N/mm at u = " << u_peak << " mm"
       << std::endl
