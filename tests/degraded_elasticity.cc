@@ -37,26 +37,6 @@ namespace
 {
   const double mu = 1.0, kappa = 2.5;
 
-  /// Norm-wise relative error of a set of entries: |fd - exact| / |exact|.
-  class RelativeError
-  {
-  public:
-    void
-    add(const double approximation, const double exact)
-    {
-      diff += (approximation - exact) * (approximation - exact);
-      norm += exact * exact;
-    }
-
-    double
-    value() const
-    {
-      return std::sqrt(diff / norm);
-    }
-
-  private:
-    double diff = 0, norm = 0;
-  };
 
   /// Three random F with J = 1.2 and three with J = 0.8.
   std::vector<Tensor<2, dim>>
@@ -284,7 +264,7 @@ main()
             const MaterialResponse r =
               degraded_neo_hooke(F, s, mu, kappa, p, true);
 
-            RelativeError e_A, e_dpsi_plus, e_P, e_dP_ds;
+            Testing::RelativeError e_A, e_dpsi_plus, e_P, e_dP_ds;
             for (unsigned int c = 0; c < dim; ++c)
               for (unsigned int D = 0; D < dim; ++D)
                 {
@@ -333,14 +313,15 @@ main()
             const MaterialResponse pr =
               plastic_update(F, PlasticHistory(), 0., s, 1., q, true);
             never_yields = never_yields && !pr.yielding;
-            RelativeError e_plastic;
+            Testing::RelativeError e_plastic;
             for (unsigned int a = 0; a < dim; ++a)
               for (unsigned int B = 0; B < dim; ++B)
                 {
                   e_plastic.add(r.P[a][B], pr.P[a][B]);
                   e_plastic.add(r.tau[a][B], pr.tau[a][B]);
                 }
-            RelativeError e_plastic_A, e_plastic_dP_ds, e_plastic_energy;
+            Testing::RelativeError e_plastic_A, e_plastic_dP_ds,
+              e_plastic_energy;
             for (unsigned int a = 0; a < dim; ++a)
               for (unsigned int B = 0; B < dim; ++B)
                 {

@@ -37,26 +37,6 @@ namespace
     {EnergySplit::volumetric_deviatoric, "volumetric-deviatoric"},
     {EnergySplit::spectral, "spectral"}};
 
-  /// Norm-wise relative error |approximation - exact| / |exact| of entries.
-  class RelativeError
-  {
-  public:
-    void
-    add(const double approximation, const double exact)
-    {
-      diff += (approximation - exact) * (approximation - exact);
-      norm += exact * exact;
-    }
-
-    double
-    value() const
-    {
-      return norm > 0. ? std::sqrt(diff / norm) : std::sqrt(diff);
-    }
-
-  private:
-    double diff = 0, norm = 0;
-  };
 
   /// Random F = I + H, |H_ij| <= 0.02: four in 3-D, four in plane strain
   /// (second: whether F is a plane-strain state).
@@ -111,9 +91,9 @@ namespace
         worst_orthogonal = std::max(worst_orthogonal, std::abs(Xp * (X - Xp)));
         // The plane-strain X sits on the kink of <.>_+ along z: there only
         // the in-plane derivatives exist.
-        const unsigned int m = (n == 5) ? 2 : d;
-        RelativeError      e;
-        const double       h = 1e-7;
+        const unsigned int     m = (n == 5) ? 2 : d;
+        Testing::RelativeError e;
+        const double           h = 1e-7;
         for (unsigned int c = 0; c < m; ++c)
           for (unsigned int D_ = 0; D_ < m; ++D_)
             {
@@ -218,7 +198,7 @@ namespace
               const unsigned int     n = plane ? 2 : d;
               const double           h = 1e-8;
               const MaterialResponse r = law(F, s, p, split, true);
-              RelativeError          e_A, e_dpsi_plus, e_P, e_dP_ds;
+              Testing::RelativeError e_A, e_dpsi_plus, e_P, e_dP_ds;
               for (unsigned int c = 0; c < n; ++c)
                 for (unsigned int D = 0; D < n; ++D)
                   {

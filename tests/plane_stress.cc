@@ -29,25 +29,6 @@ namespace
 {
   constexpr unsigned int d = material_dim;
 
-  class RelativeError
-  {
-  public:
-    void
-    add(const double approximation, const double exact)
-    {
-      diff += (approximation - exact) * (approximation - exact);
-      norm += exact * exact;
-    }
-
-    double
-    value() const
-    {
-      return norm > 0. ? std::sqrt(diff / norm) : std::sqrt(diff);
-    }
-
-  private:
-    double diff = 0, norm = 0;
-  };
 
   BodyParameters
   elastic_body(const ElasticLaw law, const bool fracture, EnergySplit split)
@@ -158,8 +139,8 @@ namespace
         // The stretch's strain error: |P_33| over the modulus.
         worst_P33 = std::max(worst_P33, std::abs(r.P[2][2]) / b.shear_modulus);
 
-        const double  h = 1e-7;
-        RelativeError e_A, e_psi, e_energy;
+        const double           h = 1e-7;
+        Testing::RelativeError e_A, e_psi, e_energy;
         for (unsigned int c = 0; c < 2; ++c)
           for (unsigned int D = 0; D < 2; ++D)
             {
@@ -183,9 +164,9 @@ namespace
                 }
             }
         // The field derivative: alpha for the plastic update, s otherwise.
-        RelativeError e_field;
-        State         yp = y, ym = y;
-        const double  hf = 1e-7;
+        Testing::RelativeError e_field;
+        State                  yp = y, ym = y;
+        const double           hf = 1e-7;
         (plastic ? yp.alpha : yp.s) += hf;
         (plastic ? ym.alpha : ym.s) -= hf;
         const MaterialResponse fp = response(b, F, yp), fm = response(b, F, ym);

@@ -655,6 +655,29 @@ end
     return solve_alpha(F);
   }
 
+  /// Norm-wise relative error of a set of entries, |approximation - exact|
+  /// / |exact| over all of them (the absolute error if every exact entry is
+  /// 0): the finite-difference checks of the material laws.
+  class RelativeError
+  {
+  public:
+    void
+    add(const double approximation, const double exact)
+    {
+      diff += (approximation - exact) * (approximation - exact);
+      norm += exact * exact;
+    }
+
+    double
+    value() const
+    {
+      return norm > 0. ? std::sqrt(diff / norm) : std::sqrt(diff);
+    }
+
+  private:
+    double diff = 0, norm = 0;
+  };
+
   inline double
   relative_error(const double value, const double reference, const double scale)
   {
