@@ -141,6 +141,37 @@ def same_model_run(level, kind="at2"):
                 curve=(u, load))
 
 
+def plot_force_curves(curves, axis, fourth, ranges, titles, file_name):
+    """Ours and pfm-cracks' force curves per level (its printed Load AXIS
+    dashed, the dW/du of its energies dotted), our fourth-order curves
+    (level, curve) dash-dotted, on two panels of the given (x0, x1, y0, y1)
+    ranges and titles, saved as FILE_NAME."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    for ax, (x0, x1, y0, y1) in zip(axes, ranges):
+        for level, (pu, pl), (ou, ol), (eu, el) in curves:
+            line, = ax.plot(ou, ol, label=f"ours, level {level}")
+            if pu:
+                ax.plot(pu, pl, "--", color=line.get_color(),
+                        label=f"pfm-cracks Load {axis}, level {level}")
+                ax.plot(eu, el, ":", color=line.get_color(),
+                        label=f"pfm-cracks dW/du, level {level}")
+        for level, curve in fourth:
+            ax.plot(*curve, "-.", label=f"ours fourth order, level {level}")
+        ax.set_xlim(x0, x1)
+        ax.set_ylim(y0, y1)
+        ax.set_xlabel("top displacement u [mm]")
+        ax.set_ylabel("load [N/mm]")
+        ax.grid(alpha=0.3)
+    axes[0].set_title(titles[0])
+    axes[1].set_title(titles[1])
+    axes[1].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(here, file_name), dpi=120)
+
+
 def same_model_table():
     """Lines of the same-model comparison and its plot."""
     lines = ["", "## The same model (same_model.sh)", "",
@@ -196,31 +227,13 @@ def same_model_table():
                          f"{o['u']:.5f} mm | {versus} | {o['newton']:.0f} / "
                          f"{o['wall']:.0f} s | {end} |")
     if curves:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
-        for ax, (x0, x1, y0, y1) in zip(axes, [(0, 0.0063, 0, 850),
-                                              (0.0052, 0.0062, 540, 820)]):
-            for level, (pu, pl), (ou, ol), (eu, el) in curves:
-                line, = ax.plot(ou, ol, label=f"ours, level {level}")
-                if pu:
-                    ax.plot(pu, pl, "--", color=line.get_color(),
-                            label=f"pfm-cracks Load y, level {level}")
-                    ax.plot(eu, el, ":", color=line.get_color(),
-                            label=f"pfm-cracks dW/du, level {level}")
-            for level, o, _ in fourth:
-                ax.plot(*o["curve"], "-.", label=f"ours fourth order, level {level}")
-            ax.set_xlim(x0, x1)
-            ax.set_ylim(y0, y1)
-            ax.set_xlabel("top displacement u [mm]")
-            ax.set_ylabel("load [N/mm]")
-            ax.grid(alpha=0.3)
-        axes[0].set_title("Notched tension, AT2, no split, Q1 (same model)")
-        axes[1].set_title("near the peak (after it the crack runs unstably)")
-        axes[1].legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(os.path.join(here, "same_model.png"), dpi=120)
+        plot_force_curves(
+            curves, "y",
+            [(level, o["curve"]) for level, o, _ in fourth],
+            [(0, 0.0063, 0, 850), (0.0052, 0.0062, 540, 820)],
+            ("Notched tension, AT2, no split, Q1 (same model)",
+             "near the peak (after it the crack runs unstably)"),
+            "same_model.png")
         lines += ["", "![force curves](same_model.png)"]
     return lines
 
@@ -279,32 +292,12 @@ def shear_table():
                   f"its / {fourth['wall']:.0f} s to it, run ends at {end}, "
                   f"largest energy residual {fourth['residual']:.1e} of W_ext."]
     if curves:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
-        for ax, (x0, x1, y0, y1) in zip(axes, [(0, 0.02, 0, 800),
-                                              (0.008, 0.0135, 300, 700)]):
-            for level, (pu, pl), (ou, ol), (eu, el) in curves:
-                line, = ax.plot(ou, ol, label=f"ours, level {level}")
-                if pu:
-                    ax.plot(pu, pl, "--", color=line.get_color(),
-                            label=f"pfm-cracks Load x, level {level}")
-                    ax.plot(eu, el, ":", color=line.get_color(),
-                            label=f"pfm-cracks dW/du, level {level}")
-            if fourth:
-                ax.plot(*fourth["curve"], "-.",
-                        label="ours fourth order, level 4")
-            ax.set_xlim(x0, x1)
-            ax.set_ylim(y0, y1)
-            ax.set_xlabel("top displacement u [mm]")
-            ax.set_ylabel("load [N/mm]")
-            ax.grid(alpha=0.3)
-        axes[0].set_title("Notched shear, AT2, spectral split, Q1 (same model)")
-        axes[1].set_title("near the peak")
-        axes[1].legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(os.path.join(here, "same_model_shear.png"), dpi=120)
+        plot_force_curves(
+            curves, "x", [(4, fourth["curve"])] if fourth else [],
+            [(0, 0.02, 0, 800), (0.008, 0.0135, 300, 700)],
+            ("Notched shear, AT2, spectral split, Q1 (same model)",
+             "near the peak"),
+            "same_model_shear.png")
         lines += ["", "![force curves](same_model_shear.png)"]
     return lines
 
